@@ -1,0 +1,3 @@
+"""gecko.seta — public Python wrappers of the compiled seta kernels."""
+
+__all__: list = []

@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Sets up (tools/setup.sh) and runs every test: the C++ tests (ctest) in a warnings-as-errors
+# Release build, again under AddressSanitizer + UndefinedBehaviorSanitizer, then the Python
+# tests (pytest) against the installed package.
+#   bash tools/test.sh
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash tools/setup.sh
+
+jobs=$(nproc 2>/dev/null || echo 2)
+warn="-Wall -Wextra -Werror"
+
+echo "== C++ tests (Release, $warn)"
+cmake -S . -B build/ci-release -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS="$warn" >/dev/null
+cmake --build build/ci-release -j "$jobs"
+ctest --test-dir build/ci-release --output-on-failure -j "$jobs"
+
+echo "== C++ tests under ASan + UBSan"
+san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
+cmake -S . -B build/ci-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGECKO_INSTALL=OFF \
+      -DCMAKE_CXX_FLAGS="$warn $san" -DCMAKE_EXE_LINKER_FLAGS="$san" >/dev/null
+cmake --build build/ci-asan -j "$jobs"
+ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+  ctest --test-dir build/ci-asan --output-on-failure -j "$jobs"
+
+echo "== Python tests"
+.venv/bin/python -m pytest -q tests/python
