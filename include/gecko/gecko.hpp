@@ -4,3 +4,7 @@
 #include "gecko/core/error.hpp"
 #include "gecko/core/policy.hpp"
 #include "gecko/elliptic.hpp"
+#include "gecko/beam.hpp"
+#include "gecko/friction.hpp"
+#include "gecko/seta.hpp"
+#include "gecko/peel.hpp"

@@ -1,3 +1,288 @@
-"""gecko.seta — public Python wrappers of the compiled seta kernels."""
+"""gecko.seta — the two-level seta of directional adhesion and the classical peel lines.
 
-__all__: list = []
+models.md §1. ``TwoLevelSeta`` holds a design (defaults: the paper's reference scene) and computes
+its exact critical line of adhesion in C++ (Carlson forms of the elastica lengths, turning points
+and folds included, the GIL released)::
+
+    import gecko, numpy as np
+    seta = gecko.TwoLevelSeta()                       # EI1=5, EI2=2, EA1=inf, EA2=50, ...
+    line = seta.critical_line(Ft=np.linspace(0, 9.9, 1000))
+    line.Fn, line.theta_joint, line.status            # numpy arrays, NaN where status != 0
+
+Status codes (``line.status``): 0 converged; 1 Newton did not converge; 2 no critical state on the
+line followed from Ft = 0 (beyond a fold, |Ft| > (Ft)max); 3 state outside the model's forms;
+4 singular (Ft exactly at a fold); 5 bad input under ``errors="nan"``.
+
+Bad input raises ``ValueError`` naming the parameter and its allowed range (or, with
+``errors="nan"``, marks the element with status 5).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Optional
+
+import numpy as np
+
+from . import _core
+
+__all__ = [
+    "TwoLevelSeta", "SingleFiber", "CriticalLine", "SetaCharacteristics", "kendall_fn", "rivlin_fn",
+    "critical_line_batch", "STATUS",
+]
+
+STATUS = {
+    0: "converged",
+    1: "not converged",
+    2: "no critical state",
+    3: "unsupported state",
+    4: "singular (at a fold)",
+    5: "invalid input",
+}
+
+_LINE_END = {
+    0: "reached the requested end of the Ft range",
+    1: "reached (Ft)max = sqrt(2 EA2 w)",
+    2: "turned back after a fold",
+    3: "no convergence (singular point)",
+    4: "left the model (axial load comparable to EA)",
+    5: "point budget exhausted",
+    6: "natural state not found",
+}
+
+_ERRORS = {"raise": 0, "nan": 1}
+
+
+def _error_code(errors: str) -> int:
+    try:
+        return _ERRORS[errors]
+    except (KeyError, TypeError):
+        raise ValueError(f"errors = {errors!r} is not allowed: need 'raise' or 'nan'") from None
+
+
+def _flat(x):
+    a = np.asarray(x, dtype=np.float64)
+    return a.shape, np.ascontiguousarray(a).reshape(-1)
+
+
+@dataclass
+class CriticalLine:
+    """The critical line at requested Ft values (same shape as ``Ft``); NaN where ``status != 0``."""
+
+    Ft: np.ndarray
+    Fn: np.ndarray
+    theta_joint: np.ndarray
+    status: np.ndarray
+    iterations: np.ndarray
+    theta_rate_joint: np.ndarray
+    theta_rate_base: np.ndarray
+    turning_points_beam: np.ndarray
+    turning_points_spatula: np.ndarray
+    # Only for the traced line (Ft=None): fold locations, why it ended, branch index per point.
+    folds: list = field(default_factory=list)
+    end: Optional[str] = None
+    branch: Optional[np.ndarray] = None
+
+    def __len__(self) -> int:
+        return int(np.size(self.Ft))
+
+
+@dataclass
+class SetaCharacteristics:
+    """Characteristic quantities (models.md §1) and their small-deformation counterparts."""
+
+    fn0: float
+    slope_k: float
+    min_fn: float
+    ft_at_min_fn: float
+    min_fn_interior: bool
+    max_pull_off: float
+    ft_max: float
+    ft_at_line_end: float
+    fn_at_line_end: float
+    sticky_at_rest: bool
+    end: str
+    folds: list
+    small_fn0: float
+    small_slope_k: float
+    small_contact_length: float
+    small_non_sticky: bool
+
+
+class TwoLevelSeta:
+    """A two-level seta design (models.md §1); the defaults are the paper's reference scene.
+
+    EI1, EI2: bending stiffnesses of beam and spatula; EA1, EA2: axial stiffnesses (``math.inf``:
+    inextensible); l1, l2: lengths; alpha1: base angle in (0, pi/2); alpha2 >= 0: kink at the joint,
+    alpha1 + alpha2 < pi/2; w: work of adhesion. Invalid values raise ``ValueError`` at construction.
+    """
+
+    _FIELDS = ("EI1", "EI2", "EA1", "EA2", "l1", "l2", "alpha1", "alpha2", "w")
+
+    def __init__(self, EI1: float = 5.0, EI2: float = 2.0, EA1: float = math.inf, EA2: float = 50.0,
+                 l1: float = 1.0, l2: float = 0.1, alpha1: float = math.pi / 6,
+                 alpha2: float = math.pi / 6, w: float = 1.0):
+        self.EI1, self.EI2, self.EA1, self.EA2 = float(EI1), float(EI2), float(EA1), float(EA2)
+        self.l1, self.l2, self.alpha1, self.alpha2, self.w = (float(l1), float(l2), float(alpha1),
+                                                               float(alpha2), float(w))
+        self._ft_max = _core.seta_validate(self._params())
+
+    def _params(self) -> np.ndarray:
+        return np.array([getattr(self, f) for f in self._FIELDS], dtype=np.float64)
+
+    def __repr__(self) -> str:
+        args = ", ".join(f"{f}={getattr(self, f)!r}" for f in self._FIELDS)
+        return f"TwoLevelSeta({args})"
+
+    @property
+    def ft_max(self) -> float:
+        """(Ft)max = sqrt(2 EA2 w): the critical line ends there (inf for EA2 = inf)."""
+        return math.sqrt(2 * self.EA2 * self.w)
+
+    def critical_line(self, Ft=None, *, errors: str = "raise", tolerance: Optional[float] = None,
+                      ft_end: Optional[float] = None) -> CriticalLine:
+        """The critical line of adhesion.
+
+        With ``Ft`` (any shape): the state at each Ft, on the line followed from Ft = 0 (the first
+        crossing; negative Ft along the line followed towards negative Ft), each solved by Newton to
+        ``tolerance`` (default 1e-12, scaled step). Without ``Ft``: the nodes of the continuation from
+        Ft = 0 to ``ft_end`` (default (Ft)max, or 3 sqrt(EI1 w)/l1 for EA2 = inf), through folds,
+        with ``folds`` and ``end`` (why the line stopped).
+        """
+        params = self._params()
+        if Ft is None:
+            d = _core.seta_critical_line(params, math.nan if ft_end is None else float(ft_end))
+            n = len(d["Ft"])
+            return CriticalLine(Ft=d["Ft"], Fn=d["Fn"], theta_joint=d["theta_joint"],
+                                status=np.zeros(n, dtype=np.int32), iterations=np.zeros(n, dtype=np.int32),
+                                theta_rate_joint=d["theta_rate_joint"], theta_rate_base=d["theta_rate_base"],
+                                turning_points_beam=d["turning_points_beam"],
+                                turning_points_spatula=d["turning_points_spatula"],
+                                folds=list(d["folds"]), end=_LINE_END.get(d["end"], str(d["end"])),
+                                branch=d["branch"])
+        shape, flat = _flat(Ft)
+        d = _core.seta_critical_line_at(params, flat, _error_code(errors),
+                                        math.nan if tolerance is None else float(tolerance))
+
+        def shaped(a):
+            return a.reshape(shape)
+
+        return CriticalLine(Ft=flat.reshape(shape), Fn=shaped(d["Fn"]), theta_joint=shaped(d["theta_joint"]),
+                            status=shaped(d["status"]), iterations=shaped(d["iterations"]),
+                            theta_rate_joint=shaped(d["theta_rate_joint"]),
+                            theta_rate_base=shaped(d["theta_rate_base"]),
+                            turning_points_beam=shaped(d["turning_points_beam"]),
+                            turning_points_spatula=shaped(d["turning_points_spatula"]))
+
+    def solve(self, Ft: float, guess=None, *, tolerance: Optional[float] = None, max_iterations: int = 40) -> dict:
+        """One critical state at ``Ft``. ``guess``: (Fn, theta_joint) or (Fn, theta_joint,
+        theta_rate_joint, theta_rate_base); without it the line is followed from Ft = 0."""
+        tol = math.nan if tolerance is None else float(tolerance)
+        if guess is None:
+            return _core.seta_solve(self._params(), float(Ft), tolerance=tol, max_iterations=max_iterations)
+        g = [float(x) for x in guess] + [math.nan] * (4 - len(guess))
+        return _core.seta_solve(self._params(), float(Ft), g[0], g[1], g[2], g[3], tol, max_iterations)
+
+    def characteristics(self, ft_end: Optional[float] = None) -> SetaCharacteristics:
+        """(Fn)0, slope k, max pull-off and its Ft, (Ft)max, stickiness at rest, with the
+        small-deformation (eqs 7, 18-22) values beside them."""
+        d = _core.seta_characteristics(self._params(), math.nan if ft_end is None else float(ft_end))
+        d = dict(d)
+        d["end"] = _LINE_END.get(d["end"], str(d["end"]))
+        d["folds"] = list(d["folds"])
+        return SetaCharacteristics(**d)
+
+    def small_deformation(self) -> dict:
+        """The linear theory (eqs 7, 18-22): fn0, slope_k, contact_length, non_sticky."""
+        return dict(_core.seta_small_deformation(self._params()))
+
+    def small_deformation_fn(self, Ft):
+        """Fn on the linear critical line (eq 18)."""
+        d = self.small_deformation()
+        out = d["fn0"] + d["slope_k"] * np.asarray(Ft, dtype=np.float64)
+        return float(out) if np.ndim(out) == 0 else out
+
+
+class SingleFiber:
+    """The single-level fiber of He et al. 2013 (models.md §1, Fig 4): one segment of length l,
+    bending stiffness EI, axial stiffness EA (``math.inf``: inextensible), base angle alpha in
+    (0, pi/2), work of adhesion w. Defaults: EI = 1/2, EA = 50, l = 1, alpha = pi/3, w = 1.
+    """
+
+    _FIELDS = ("EI", "EA", "l", "alpha", "w")
+
+    def __init__(self, EI: float = 0.5, EA: float = 50.0, l: float = 1.0, alpha: float = math.pi / 3,
+                 w: float = 1.0):
+        self.EI, self.EA, self.l, self.alpha, self.w = float(EI), float(EA), float(l), float(alpha), float(w)
+        # validate now (an empty query raises for a bad design)
+        _core.fiber_critical_line_at(self._params(), np.zeros(0))
+
+    def _params(self) -> np.ndarray:
+        return np.array([getattr(self, f) for f in self._FIELDS], dtype=np.float64)
+
+    def __repr__(self) -> str:
+        return "SingleFiber(" + ", ".join(f"{f}={getattr(self, f)!r}" for f in self._FIELDS) + ")"
+
+    @property
+    def ft_max(self) -> float:
+        return math.sqrt(2 * self.EA * self.w)
+
+    def critical_line(self, Ft, *, errors: str = "raise", tolerance: Optional[float] = None) -> CriticalLine:
+        """The fiber's critical line at ``Ft`` (any shape), followed from Ft = 0; ``theta_joint`` is NaN
+        (no joint) and the fiber's turning points are in ``turning_points_beam``."""
+        shape, flat = _flat(Ft)
+        d = _core.fiber_critical_line_at(self._params(), flat, _error_code(errors),
+                                         math.nan if tolerance is None else float(tolerance))
+        return CriticalLine(Ft=flat.reshape(shape), **{k: v.reshape(shape) for k, v in d.items()})
+
+
+def critical_line_batch(designs, Ft, *, threads: int = 1, errors: str = "raise",
+                        tolerance: Optional[float] = None) -> CriticalLine:
+    """Many designs x many Ft in one call, multithreaded (the GIL released).
+
+    ``designs``: a sequence of ``TwoLevelSeta`` or an array of shape (n, 9) in the field order
+    (EI1, EI2, EA1, EA2, l1, l2, alpha1, alpha2, w). ``Ft``: 1-D. Returns arrays of shape
+    (n, len(Ft)); the result does not depend on ``threads`` (each design is solved independently).
+    """
+    if isinstance(designs, TwoLevelSeta):
+        designs = [designs]
+    if len(designs) and isinstance(designs[0], TwoLevelSeta):
+        arr = np.stack([d._params() for d in designs])
+    else:
+        arr = np.asarray(designs, dtype=np.float64).reshape(-1, 9)
+    ft = np.ascontiguousarray(np.asarray(Ft, dtype=np.float64).reshape(-1))
+    d = _core.seta_batch(np.ascontiguousarray(arr.reshape(-1)), ft, _error_code(errors), int(threads),
+                         math.nan if tolerance is None else float(tolerance))
+    shape = (arr.shape[0], ft.size)
+
+    def shaped(a):
+        return a.reshape(shape)
+
+    return CriticalLine(Ft=np.broadcast_to(ft, shape).copy(), Fn=shaped(d["Fn"]),
+                        theta_joint=shaped(d["theta_joint"]), status=shaped(d["status"]),
+                        iterations=shaped(d["iterations"]), theta_rate_joint=shaped(d["theta_rate_joint"]),
+                        theta_rate_base=shaped(d["theta_rate_base"]),
+                        turning_points_beam=shaped(d["turning_points_beam"]),
+                        turning_points_spatula=shaped(d["turning_points_spatula"]))
+
+
+def _vectorised(kernel, *args, errors):
+    code = _error_code(errors)
+    arrays = np.broadcast_arrays(*(np.asarray(a, dtype=np.float64) for a in args))
+    shape = arrays[0].shape
+    flat = [np.ascontiguousarray(a).reshape(-1) for a in arrays]
+    out = kernel(*flat, code)
+    return float(out[0]) if shape == () else out.reshape(shape)
+
+
+def kendall_fn(Ft, EA, w, *, errors: str = "raise"):
+    """Kendall's peel line (eq 17): the tensile critical Fn (<= 0) of an extensible film at shear Ft.
+
+    Defined for -2w/(2 + sqrt(4 + 2w/EA)) <= Ft <= sqrt(2 EA w); EA = inf gives Rivlin's line.
+    """
+    return _vectorised(_core.kendall_fn, Ft, EA, w, errors=errors)
+
+
+def rivlin_fn(Ft, w, *, errors: str = "raise"):
+    """Rivlin's peel line (eq 17): Fn = -sqrt(w^2 + 2 w Ft), Ft >= -w/2."""
+    return _vectorised(_core.rivlin_fn, Ft, w, errors=errors)

@@ -1,10 +1,432 @@
-// Python bindings of gecko/friction (see python/gecko/friction.py for the public wrappers).
+// Python bindings of gecko/beam and gecko/friction (see python/gecko/friction.py for the public
+// wrappers): flat float64 arrays in, arrays out, the loops run without the GIL. Broadcasting,
+// scalars, presets, law objects and the `errors=` keyword live in python/gecko/friction.py.
+// A Python detachment law is evaluated there (vectorised, GIL held) and passed in as G(V).
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstddef>
+#include <cstdint>
+#include <exception>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
 #include "bindings.hpp"
+#include "gecko/beam.hpp"
+#include "gecko/friction.hpp"
 
 namespace gecko {
 namespace bindings {
+namespace {
 
-void bind_friction(py::module_& m) { (void)m; }
+using policies::default_policy;
+using policies::nan_policy;
+using Mat2 = Eigen::Matrix2d;
+
+void require_equal(py::ssize_t n, const darray& a, const char* what) {
+  if (a.ndim() != 1 || a.size() != n)
+    throw std::invalid_argument(std::string("gecko._core: ") + what +
+                                " must be a flat array of the same length as the others");
+}
+
+Mat2 to_mat2(const darray& K, const char* name) {
+  if (K.size() != 4)
+    throw std::invalid_argument(std::string("gecko._core: ") + name + " must have 4 entries (2x2)");
+  const double* k = K.data();
+  Mat2 M;
+  M << k[0], k[1], k[2], k[3];
+  return M;
+}
+
+py::array_t<double> from_mat2(const Mat2& M) {
+  py::array_t<double> out({2, 2});
+  auto o = out.mutable_unchecked<2>();
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) o(i, j) = M(i, j);
+  return out;
+}
+
+// Runs body(begin, end) over [0, n) without the GIL, split over up to 8 threads for long arrays
+// (at least 100000 elements each; the elements are independent). An exception in a worker is
+// re-thrown here once all have joined, with the GIL held again.
+template <class Body>
+void parallel_for(py::ssize_t n, Body body) {
+  py::gil_scoped_release release;
+  const py::ssize_t per_thread = 100000;
+  const unsigned hw = std::thread::hardware_concurrency();
+  py::ssize_t threads = std::min<py::ssize_t>({py::ssize_t(hw == 0 ? 1 : hw), 8, n / per_thread});
+  if (threads < 2) {
+    body(py::ssize_t(0), n);
+    return;
+  }
+  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(threads));
+  std::vector<std::thread> pool;
+  auto run = [&](py::ssize_t k) {
+    try {
+      body(n * k / threads, n * (k + 1) / threads);
+    } catch (...) {
+      errors[std::size_t(k)] = std::current_exception();
+    }
+  };
+  for (py::ssize_t k = 1; k < threads; ++k) pool.emplace_back(run, k);
+  run(0);
+  for (auto& t : pool) t.join();
+  for (auto& e : errors)
+    if (e) std::rethrow_exception(e);
+}
+
+// A shape backed by Python callables; the GIL is held throughout (castigliano does not release
+// it). Without dzdx the slope is the complex step through z itself.
+struct python_shape {
+  py::function z;
+  py::object dzdx;
+  double operator()(double x) const { return z(x).cast<double>(); }
+  double slope(double x) const {
+    if (!dzdx.is_none()) return dzdx(x).cast<double>();
+    const double eps = std::numeric_limits<double>::epsilon();
+    const double floor = std::numeric_limits<double>::min() / eps;
+    const double h = eps * x > floor ? eps * x : floor;
+    static const char* message =
+        "gecko.castigliano_compliance: dzdx = None needs z to accept complex x (complex-step "
+        "slope, e.g. numpy functions); pass dzdx explicitly otherwise";
+    py::object v;
+    try {
+      v = z(std::complex<double>(x, h));
+    } catch (py::error_already_set& e) {
+      if (e.matches(PyExc_TypeError)) throw std::invalid_argument(message);
+      throw;
+    }
+    try {
+      return v.cast<std::complex<double>>().imag() / h;
+    } catch (const py::cast_error&) {
+      throw std::invalid_argument(message);
+    }
+  }
+};
+
+sliding_params<double> make_params(double N, const darray& K, double f_par1, double f_perp1) {
+  sliding_params<double> p;
+  p.N = N;
+  p.K = to_mat2(K, "K");
+  p.f_par1 = f_par1;
+  p.f_perp1 = f_perp1;
+  return p;
+}
+
+// law_kind: 0 viscoelastic (G0, V_star, n), 1 Eyring (G0, V_star).
+template <class Policy, class Fn>
+auto with_law(int kind, double G0, double V_star, double n, Fn fn) {
+  if (kind == 0) return fn(viscoelastic_detachment<double, Policy>{G0, V_star, n});
+  if (kind == 1) return fn(eyring_detachment<double, Policy>{G0, V_star});
+  throw std::invalid_argument("gecko._core: law kind must be 0 (viscoelastic) or 1 (eyring)");
+}
+
+// Outputs (F_par, F_perp, stretch, t_on); with forces_only the last two are None and never
+// allocated (a quarter of the run time for long arrays is the page faults of fresh outputs).
+struct sliding_outputs {
+  py::array_t<double> Fp, Fq, dd, ton;
+  double *a, *b, *c = nullptr, *d = nullptr;
+  sliding_outputs(py::ssize_t m, bool forces_only) : Fp(m), Fq(m) {
+    a = Fp.mutable_data();
+    b = Fq.mutable_data();
+    if (!forces_only) {
+      dd = py::array_t<double>(m);
+      ton = py::array_t<double>(m);
+      c = dd.mutable_data();
+      d = ton.mutable_data();
+    }
+  }
+  py::tuple result() const {
+    if (!c) return py::make_tuple(Fp, Fq, py::none(), py::none());
+    return py::make_tuple(Fp, Fq, dd, ton);
+  }
+};
+
+template <class Policy>
+py::tuple steady_sliding_law_imp(const darray& V, double N, const darray& K, double f_par1,
+                                 double f_perp1, int kind, double G0, double V_star, double n,
+                                 double t_off, bool forces_only) {
+  const auto p = make_params(N, K, f_par1, f_perp1);
+  const py::ssize_t m = V.size();
+  sliding_outputs out(m, forces_only);
+  double *a = out.a, *b = out.b, *c = out.c, *d = out.d;
+  const double* v = V.data();
+  with_law<Policy>(kind, G0, V_star, n, [&](auto law) {
+    // Validate the parameters once with the GIL held (a bad law raises here, not in a thread).
+    if (m > 0) {
+      steady_sliding(p, law, v, 1, a, b, c, d, t_off, Policy());
+    }
+    parallel_for(m, [&](py::ssize_t lo, py::ssize_t hi) {
+      steady_sliding(p, law, v + lo, std::size_t(hi - lo), a + lo, b + lo, c ? c + lo : nullptr,
+                     d ? d + lo : nullptr, t_off, Policy());
+    });
+    return 0;
+  });
+  return out.result();
+}
+
+template <class Policy>
+py::tuple steady_sliding_energy_imp(const darray& V, const darray& G, double N, const darray& K,
+                                    double f_par1, double f_perp1, double t_off, bool forces_only) {
+  const auto p = make_params(N, K, f_par1, f_perp1);
+  const py::ssize_t m = V.size();
+  require_equal(m, G, "G");
+  sliding_outputs out(m, forces_only);
+  double *a = out.a, *b = out.b, *c = out.c, *d = out.d;
+  const double* v = V.data();
+  const double* g = G.data();
+  parallel_for(m, [&](py::ssize_t lo, py::ssize_t hi) {
+    for (py::ssize_t i = lo; i < hi; ++i) {
+      const auto r = steady_sliding_from_energy(p, v[i], g[i], t_off, Policy());
+      a[i] = r.F_par;
+      b[i] = r.F_perp;
+      if (c) c[i] = r.stretch;
+      if (d) d[i] = r.t_on;
+    }
+  });
+  return out.result();
+}
+
+template <class F>
+py::array_t<double> map4(const darray& a, const darray& b, const darray& c, const darray& d, F f) {
+  const py::ssize_t n = a.size();
+  require_equal(n, b, "arguments");
+  require_equal(n, c, "arguments");
+  require_equal(n, d, "arguments");
+  py::array_t<double> out(n);
+  double* o = out.mutable_data();
+  const double *pa = a.data(), *pb = b.data(), *pc = c.data(), *pd = d.data();
+  parallel_for(n, [&](py::ssize_t lo, py::ssize_t hi) {
+    for (py::ssize_t i = lo; i < hi; ++i) o[i] = f(pa[i], pb[i], pc[i], pd[i]);
+  });
+  return out;
+}
+
+}  // namespace
+
+void bind_friction(py::module_& m) {
+  // ---- beam ----------------------------------------------------------------------------
+  m.def("castigliano_compliance",
+        [](py::function z, py::object dzdx, double L, double EI, double EA, double tol,
+           int max_levels) {
+          quadrature_report<double> rep;
+          quadrature_options<double> opt;
+          opt.tol = tol;
+          opt.max_levels = max_levels;
+          opt.report = &rep;
+          const Mat2 C = gecko::castigliano_compliance(python_shape{z, dzdx},
+                                                       curved_beam<double>{L, EI, EA}, opt);
+          py::dict report;
+          report["error_estimate"] = rep.error_estimate;
+          report["levels"] = rep.levels;
+          report["evaluations"] = rep.evaluations;
+          report["converged"] = rep.converged;
+          return py::make_tuple(from_mat2(C), report);
+        },
+        py::arg("z"), py::arg("dzdx"), py::arg("L"), py::arg("EI"), py::arg("EA"),
+        py::arg("tol") = 0.0, py::arg("max_levels") = 9);
+  m.def("parabolic_beam_compliance", [](const darray& L, const darray& EI, int errors, bool rigid) {
+    const py::ssize_t n = L.size();
+    require_equal(n, EI, "EI");
+    py::array_t<double> out({n, py::ssize_t(2), py::ssize_t(2)});
+    double* o = out.mutable_data();
+    const double *pl = L.data(), *pe = EI.data();
+    {
+      py::gil_scoped_release release;
+      for (py::ssize_t i = 0; i < n; ++i) {
+        Mat2 C;
+        if (errors == int(on_error::nan))
+          C = rigid ? parabolic_beam_rigidity(pl[i], pe[i], nan_policy())
+                    : parabolic_beam_compliance(pl[i], pe[i], nan_policy());
+        else
+          C = rigid ? parabolic_beam_rigidity(pl[i], pe[i], default_policy())
+                    : parabolic_beam_compliance(pl[i], pe[i], default_policy());
+        o[4 * i] = C(0, 0); o[4 * i + 1] = C(0, 1); o[4 * i + 2] = C(1, 0); o[4 * i + 3] = C(1, 1);
+      }
+    }
+    return out;
+  }, py::arg("L"), py::arg("EI"), py::arg("errors") = 0, py::arg("rigidity") = false);
+  m.def("rigidity", [](const darray& C, int errors) {
+    // C: flat, 4 entries per matrix (row-major).
+    if (C.size() % 4 != 0) throw std::invalid_argument("gecko._core: C must hold 2x2 matrices");
+    const py::ssize_t n = C.size() / 4;
+    py::array_t<double> out({n, py::ssize_t(2), py::ssize_t(2)});
+    double* o = out.mutable_data();
+    const double* c = C.data();
+    {
+      py::gil_scoped_release release;
+      for (py::ssize_t i = 0; i < n; ++i) {
+        Mat2 M;
+        M << c[4 * i], c[4 * i + 1], c[4 * i + 2], c[4 * i + 3];
+        const Mat2 K = errors == int(on_error::nan) ? gecko::rigidity(M, nan_policy())
+                                                    : gecko::rigidity(M, default_policy());
+        o[4 * i] = K(0, 0); o[4 * i + 1] = K(0, 1); o[4 * i + 2] = K(1, 0); o[4 * i + 3] = K(1, 1);
+      }
+    }
+    return out;
+  }, py::arg("C"), py::arg("errors") = 0);
+
+  // ---- force traces --------------------------------------------------------------------
+  m.def("force_trace", [](const darray& K, const darray& t, const darray& d_par,
+                          const darray& d_perp, py::object times, int samples_per_segment) {
+    displacement_path<double> path{std::vector<double>(t.data(), t.data() + t.size()),
+                                   std::vector<double>(d_par.data(), d_par.data() + d_par.size()),
+                                   std::vector<double>(d_perp.data(), d_perp.data() + d_perp.size())};
+    const Mat2 KK = to_mat2(K, "K");
+    force_trace_result<double> r;
+    if (times.is_none()) {
+      r = gecko::force_trace(KK, path, samples_per_segment);
+    } else {
+      darray tt = times.cast<darray>();
+      r = gecko::force_trace(KK, path, std::vector<double>(tt.data(), tt.data() + tt.size()));
+    }
+    py::dict out;
+    out["t"] = py::array_t<double>(r.t.size(), r.t.data());
+    out["d_par"] = py::array_t<double>(r.d_par.size(), r.d_par.data());
+    out["d_perp"] = py::array_t<double>(r.d_perp.size(), r.d_perp.data());
+    out["f_par"] = py::array_t<double>(r.f_par.size(), r.f_par.data());
+    out["f_perp"] = py::array_t<double>(r.f_perp.size(), r.f_perp.data());
+    return out;
+  }, py::arg("K"), py::arg("t"), py::arg("d_par"), py::arg("d_perp"), py::arg("times") = py::none(),
+     py::arg("samples_per_segment") = 50);
+
+  // ---- detachment ----------------------------------------------------------------------
+  m.def("viscoelastic_detachment", [](const darray& V, const darray& G0, const darray& Vs,
+                                      const darray& n, int errors) {
+    if (errors == int(on_error::nan))
+      return map4(V, G0, Vs, n, [](double a, double b, double c, double d) {
+        return viscoelastic_detachment_energy(a, b, c, d, nan_policy()); });
+    return map4(V, G0, Vs, n, [](double a, double b, double c, double d) {
+      return viscoelastic_detachment_energy(a, b, c, d, default_policy()); });
+  }, py::arg("V"), py::arg("G0"), py::arg("V_star"), py::arg("n"), py::arg("errors") = 0);
+  m.def("eyring_detachment", [](const darray& V, const darray& G0, const darray& Vs, int errors) {
+    if (errors == int(on_error::nan))
+      return map4(V, G0, Vs, Vs, [](double a, double b, double c, double) {
+        return eyring_detachment_energy(a, b, c, nan_policy()); });
+    return map4(V, G0, Vs, Vs, [](double a, double b, double c, double) {
+      return eyring_detachment_energy(a, b, c, default_policy()); });
+  }, py::arg("V"), py::arg("G0"), py::arg("V_star"), py::arg("errors") = 0);
+  m.def("detachment_stretch", [](const darray& K, const darray& f1, const darray& G, int errors) {
+    if (errors == int(on_error::nan))
+      return map4(K, f1, G, G, [](double a, double b, double c, double) {
+        return gecko::detachment_stretch(a, b, c, nan_policy()); });
+    return map4(K, f1, G, G, [](double a, double b, double c, double) {
+      return gecko::detachment_stretch(a, b, c, default_policy()); });
+  }, py::arg("K_par_par"), py::arg("f_par1"), py::arg("G"), py::arg("errors") = 0);
+  m.def("resonant_frequency", [](const darray& D, const darray& L, const darray& E,
+                                 const darray& rho, int errors) {
+    if (errors == int(on_error::nan))
+      return map4(D, L, E, rho, [](double a, double b, double c, double d) {
+        return gecko::resonant_frequency(a, b, c, d, nan_policy()); });
+    return map4(D, L, E, rho, [](double a, double b, double c, double d) {
+      return gecko::resonant_frequency(a, b, c, d, default_policy()); });
+  }, py::arg("D"), py::arg("L"), py::arg("E"), py::arg("rho"), py::arg("errors") = 0);
+
+  // ---- steady sliding --------------------------------------------------------------------
+  m.def("steady_sliding_law", [](const darray& V, double N, const darray& K, double f_par1,
+                                 double f_perp1, int kind, double G0, double V_star, double n,
+                                 double t_off, int errors, bool forces_only) {
+    if (errors == int(on_error::nan))
+      return steady_sliding_law_imp<nan_policy>(V, N, K, f_par1, f_perp1, kind, G0, V_star, n,
+                                                t_off, forces_only);
+    return steady_sliding_law_imp<default_policy>(V, N, K, f_par1, f_perp1, kind, G0, V_star, n,
+                                                  t_off, forces_only);
+  }, py::arg("V"), py::arg("N"), py::arg("K"), py::arg("f_par1"), py::arg("f_perp1"),
+     py::arg("kind"), py::arg("G0"), py::arg("V_star"), py::arg("n"), py::arg("t_off") = 0.0,
+     py::arg("errors") = 0, py::arg("forces_only") = false);
+  m.def("steady_sliding_energy", [](const darray& V, const darray& G, double N, const darray& K,
+                                    double f_par1, double f_perp1, double t_off, int errors,
+                                    bool forces_only) {
+    if (errors == int(on_error::nan))
+      return steady_sliding_energy_imp<nan_policy>(V, G, N, K, f_par1, f_perp1, t_off, forces_only);
+    return steady_sliding_energy_imp<default_policy>(V, G, N, K, f_par1, f_perp1, t_off, forces_only);
+  }, py::arg("V"), py::arg("G"), py::arg("N"), py::arg("K"), py::arg("f_par1"), py::arg("f_perp1"),
+     py::arg("t_off") = 0.0, py::arg("errors") = 0, py::arg("forces_only") = false);
+
+  // ---- simulation --------------------------------------------------------------------------
+  m.def("simulate_spatulae", [](double N, const darray& K, double f_par1, double f_perp1,
+                                double V, double G, std::size_t spatulae, double duration,
+                                double t_off, bool exponential, std::size_t samples,
+                                std::uint64_t seed) {
+    const auto p = make_params(N, K, f_par1, f_perp1);
+    spatula_simulation_options<double> o;
+    o.spatulae = spatulae;
+    o.duration = duration;
+    o.t_off = t_off;
+    o.law = exponential ? resticking::exponential : resticking::fixed;
+    o.samples = samples;
+    o.seed = seed;
+    spatula_simulation_result<double> r;
+    {
+      py::gil_scoped_release release;
+      r = gecko::simulate_spatulae(p, [G](double) { return G; }, V, o);
+    }
+    py::dict out;
+    out["mean_par"] = r.mean_par;
+    out["mean_perp"] = r.mean_perp;
+    out["std_par"] = r.std_par;
+    out["std_perp"] = r.std_perp;
+    out["stretch"] = r.stretch;
+    out["t_on"] = r.t_on;
+    out["detachments"] = r.detachments;
+    out["t"] = py::array_t<double>(r.t.size(), r.t.data());
+    out["F_par"] = py::array_t<double>(r.F_par.size(), r.F_par.data());
+    out["F_perp"] = py::array_t<double>(r.F_perp.size(), r.F_perp.data());
+    return out;
+  }, py::arg("N"), py::arg("K"), py::arg("f_par1"), py::arg("f_perp1"), py::arg("V"), py::arg("G"),
+     py::arg("spatulae"), py::arg("duration"), py::arg("t_off"), py::arg("exponential"),
+     py::arg("samples"), py::arg("seed"));
+
+  // ---- fit ---------------------------------------------------------------------------------
+  m.def("fit_steady_sliding", [](const darray& V, const darray& F_par, const darray& F_perp,
+                                 double N, const darray& K, double f_par1, double f_perp1,
+                                 int kind, double G0, double V_star, double n, bool fit_f_par1,
+                                 bool fit_f_perp1, bool fit_coupling, int max_iterations) {
+    const py::ssize_t m = V.size();
+    require_equal(m, F_par, "F_par");
+    require_equal(m, F_perp, "F_perp");
+    const auto p = make_params(N, K, f_par1, f_perp1);
+    fit_options<double> opt;
+    opt.fit_f_par1 = fit_f_par1;
+    opt.fit_f_perp1 = fit_f_perp1;
+    opt.fit_coupling = fit_coupling;
+    opt.max_iterations = max_iterations;
+    return with_law<default_policy>(kind, G0, V_star, n, [&](auto law) {
+      decltype(gecko::fit_steady_sliding(V.data(), F_par.data(), F_perp.data(), std::size_t(m), p,
+                                         law, opt)) r;
+      {
+        py::gil_scoped_release release;
+        r = gecko::fit_steady_sliding(V.data(), F_par.data(), F_perp.data(), std::size_t(m), p,
+                                      law, opt);
+      }
+      py::dict out;
+      out["names"] = r.names;
+      out["values"] = r.values;
+      out["standard_errors"] = r.standard_errors;
+      const auto np_ = r.covariance.rows();
+      py::array_t<double> cov({np_, np_});
+      auto c = cov.mutable_unchecked<2>();
+      for (py::ssize_t i = 0; i < np_; ++i)
+        for (py::ssize_t j = 0; j < np_; ++j) c(i, j) = r.covariance(i, j);
+      out["covariance"] = cov;
+      out["rss"] = r.rss;
+      out["iterations"] = r.iterations;
+      out["status"] = std::string(to_string(r.status));
+      out["f_par1"] = r.params.f_par1;
+      out["f_perp1"] = r.params.f_perp1;
+      out["K"] = from_mat2(r.params.K);
+      return out;
+    });
+  }, py::arg("V"), py::arg("F_par"), py::arg("F_perp"), py::arg("N"), py::arg("K"),
+     py::arg("f_par1"), py::arg("f_perp1"), py::arg("kind"), py::arg("G0"), py::arg("V_star"),
+     py::arg("n"), py::arg("fit_f_par1") = true, py::arg("fit_f_perp1") = true,
+     py::arg("fit_coupling") = false, py::arg("max_iterations") = 200);
+}
 
 }  // namespace bindings
 }  // namespace gecko

@@ -1,10 +1,329 @@
-// Python bindings of gecko/seta (see python/gecko/seta.py for the public wrappers).
+// Python bindings of gecko/seta and gecko/peel (see python/gecko/seta.py for the public wrappers).
+// Designs travel as 9 doubles (EI1, EI2, EA1, EA2, l1, l2, alpha1, alpha2, w); arrays are flat
+// float64; every C++ loop runs without the GIL (errors raised inside leave the released scope
+// normally, so pybind11 re-acquires the GIL before turning std::domain_error into ValueError).
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <pybind11/stl.h>
+
 #include "bindings.hpp"
+#include "gecko/peel.hpp"
+#include "gecko/seta.hpp"
 
 namespace gecko {
 namespace bindings {
+namespace {
 
-void bind_seta(py::module_& m) { (void)m; }
+using policies::default_policy;
+using policies::nan_policy;
+
+TwoLevelSeta<double> design_from(const double* p) {
+  TwoLevelSeta<double> s;
+  s.EI1 = p[0]; s.EI2 = p[1]; s.EA1 = p[2]; s.EA2 = p[3];
+  s.l1 = p[4]; s.l2 = p[5]; s.alpha1 = p[6]; s.alpha2 = p[7]; s.w = p[8];
+  return s;
+}
+
+TwoLevelSeta<double> design_from(const darray& params) {
+  if (params.ndim() != 1 || params.size() != 9)
+    throw std::invalid_argument("gecko._core: a seta design is 9 numbers (EI1, EI2, EA1, EA2, l1, l2, alpha1, alpha2, w)");
+  return design_from(params.data());
+}
+
+critical_line_options<double> line_options(double ft_end, double tolerance) {
+  critical_line_options<double> o;
+  o.ft_end = ft_end;
+  if (tolerance == tolerance) o.tolerance = tolerance;
+  return o;
+}
+
+// Columns of critical states.
+struct state_columns {
+  py::array_t<double> Fn, theta_joint, rate_joint, rate_base;
+  py::array_t<std::int32_t> status, iterations, tp_beam, tp_spatula;
+  explicit state_columns(py::ssize_t n)
+      : Fn(n), theta_joint(n), rate_joint(n), rate_base(n), status(n), iterations(n), tp_beam(n), tp_spatula(n) {}
+  struct raw {
+    double *Fn, *theta_joint, *rate_joint, *rate_base;
+    std::int32_t *status, *iterations, *tp_beam, *tp_spatula;
+    void put(std::size_t i, const critical_state<double>& s) const {
+      Fn[i] = s.Fn;
+      theta_joint[i] = s.theta_joint;
+      rate_joint[i] = s.theta_rate_joint;
+      rate_base[i] = s.theta_rate_base;
+      status[i] = static_cast<std::int32_t>(s.status);
+      iterations[i] = s.iterations;
+      tp_beam[i] = s.turning_points_beam;
+      tp_spatula[i] = s.turning_points_spatula;
+    }
+  };
+  raw pointers() {
+    return {Fn.mutable_data(), theta_joint.mutable_data(), rate_joint.mutable_data(), rate_base.mutable_data(),
+            status.mutable_data(), iterations.mutable_data(), tp_beam.mutable_data(), tp_spatula.mutable_data()};
+  }
+  py::dict as_dict() const {
+    py::dict d;
+    d["Fn"] = Fn;
+    d["theta_joint"] = theta_joint;
+    d["theta_rate_joint"] = rate_joint;
+    d["theta_rate_base"] = rate_base;
+    d["status"] = status;
+    d["iterations"] = iterations;
+    d["turning_points_beam"] = tp_beam;
+    d["turning_points_spatula"] = tp_spatula;
+    return d;
+  }
+};
+
+void line_at(const TwoLevelSeta<double>& s, const double* Ft, std::size_t n, int errors,
+             const critical_line_options<double>& o, std::vector<critical_state<double>>& out) {
+  out.resize(n);
+  if (errors == static_cast<int>(on_error::nan)) critical_line_at(s, Ft, n, out.data(), o, nan_policy());
+  else critical_line_at(s, Ft, n, out.data(), o, default_policy());
+}
+
+}  // namespace
+
+void bind_seta(py::module_& m) {
+  m.def("seta_validate", [](const darray& params, double Ft) {
+    const auto s = design_from(params);
+    detail::check_seta<double, default_policy>(s, "gecko.TwoLevelSeta");
+    if (Ft == Ft) detail::check_ft<double, default_policy>(Ft, ft_max(s), "gecko.TwoLevelSeta");
+    return ft_max(s);
+  }, py::arg("params"), py::arg("Ft") = std::nan(""));
+
+  m.def("seta_critical_line_at", [](const darray& params, const darray& Ft, int errors, double tolerance) {
+    const auto s = design_from(params);
+    const auto n = static_cast<std::size_t>(Ft.size());
+    state_columns cols(static_cast<py::ssize_t>(n));
+    auto raw = cols.pointers();
+    const double* f = Ft.data();
+    {
+      py::gil_scoped_release release;
+      std::vector<critical_state<double>> out;
+      line_at(s, f, n, errors, line_options(std::nan(""), tolerance), out);
+      for (std::size_t i = 0; i < n; ++i) raw.put(i, out[i]);
+    }
+    return cols.as_dict();
+  }, py::arg("params"), py::arg("Ft"), py::arg("errors") = 0, py::arg("tolerance") = std::nan(""));
+
+  m.def("seta_critical_line", [](const darray& params, double ft_end) {
+    const auto s = design_from(params);
+    critical_line_result<double> r;
+    {
+      py::gil_scoped_release release;
+      r = critical_line(s, line_options(ft_end, std::nan("")));
+    }
+    const auto n = static_cast<py::ssize_t>(r.points.size());
+    py::array_t<double> Ft(n), Fn(n), beta(n), rj(n), rb(n);
+    py::array_t<std::int32_t> tpb(n), tps(n), branch(n);
+    for (py::ssize_t i = 0; i < n; ++i) {
+      const auto& p = r.points[static_cast<std::size_t>(i)];
+      Ft.mutable_data()[i] = p.Ft;
+      Fn.mutable_data()[i] = p.Fn;
+      beta.mutable_data()[i] = p.theta_joint;
+      rj.mutable_data()[i] = p.theta_rate_joint;
+      rb.mutable_data()[i] = p.theta_rate_base;
+      tpb.mutable_data()[i] = p.turning_points_beam;
+      tps.mutable_data()[i] = p.turning_points_spatula;
+      branch.mutable_data()[i] = p.branch;
+    }
+    py::dict d;
+    d["Ft"] = Ft;
+    d["Fn"] = Fn;
+    d["theta_joint"] = beta;
+    d["theta_rate_joint"] = rj;
+    d["theta_rate_base"] = rb;
+    d["turning_points_beam"] = tpb;
+    d["turning_points_spatula"] = tps;
+    d["branch"] = branch;
+    d["folds"] = py::cast(r.folds);
+    d["end"] = static_cast<int>(r.end);
+    d["natural_Fn"] = r.natural.Fn;
+    d["natural_status"] = static_cast<int>(r.natural.status);
+    return d;
+  }, py::arg("params"), py::arg("ft_end") = std::nan(""));
+
+  m.def("seta_solve", [](const darray& params, double Ft, double Fn, double beta, double rate_joint,
+                         double rate_base, double tolerance, int max_iterations) {
+    const auto s = design_from(params);
+    critical_state<double> r;
+    {
+      py::gil_scoped_release release;
+      solve_options<double> o;
+      if (tolerance == tolerance) o.tolerance = tolerance;
+      o.max_iterations = max_iterations;
+      r = Fn == Fn ? solve_critical(s, Ft, critical_guess<double>{Fn, beta, rate_joint, rate_base}, o)
+                   : solve_critical(s, Ft);
+    }
+    py::dict d;
+    d["Ft"] = r.Ft;
+    d["Fn"] = r.Fn;
+    d["theta_joint"] = r.theta_joint;
+    d["status"] = static_cast<int>(r.status);
+    d["iterations"] = r.iterations;
+    d["theta_rate_joint"] = r.theta_rate_joint;
+    d["theta_rate_base"] = r.theta_rate_base;
+    d["turning_points_beam"] = r.turning_points_beam;
+    d["turning_points_spatula"] = r.turning_points_spatula;
+    return d;
+  }, py::arg("params"), py::arg("Ft"), py::arg("Fn") = std::nan(""), py::arg("theta_joint") = std::nan(""),
+     py::arg("theta_rate_joint") = std::nan(""), py::arg("theta_rate_base") = std::nan(""),
+     py::arg("tolerance") = std::nan(""), py::arg("max_iterations") = 40);
+
+  m.def("seta_characteristics", [](const darray& params, double ft_end) {
+    const auto s = design_from(params);
+    seta_characteristics<double> c;
+    {
+      py::gil_scoped_release release;
+      c = characteristics(s, line_options(ft_end, std::nan("")));
+    }
+    py::dict d;
+    d["fn0"] = c.fn0;
+    d["slope_k"] = c.slope_k;
+    d["min_fn"] = c.min_fn;
+    d["ft_at_min_fn"] = c.ft_at_min_fn;
+    d["min_fn_interior"] = c.min_fn_interior;
+    d["max_pull_off"] = c.max_pull_off;
+    d["ft_max"] = c.ft_max;
+    d["ft_at_line_end"] = c.ft_at_line_end;
+    d["fn_at_line_end"] = c.fn_at_line_end;
+    d["sticky_at_rest"] = c.sticky_at_rest;
+    d["end"] = static_cast<int>(c.end);
+    d["folds"] = py::cast(c.folds);
+    d["small_fn0"] = c.small.fn0;
+    d["small_slope_k"] = c.small.slope_k;
+    d["small_contact_length"] = c.small.contact_length;
+    d["small_non_sticky"] = c.small.non_sticky;
+    return d;
+  }, py::arg("params"), py::arg("ft_end") = std::nan(""));
+
+  // Many designs x many Ft: designs is (n*9) flat, Ft (m); returns (n*m) columns, row-major by
+  // design. Designs are spread over `threads` std::threads; each design's line is independent,
+  // so the result does not depend on the thread count.
+  m.def("seta_batch", [](const darray& designs, const darray& Ft, int errors, int threads, double tolerance) {
+    if (designs.ndim() != 1 || designs.size() % 9 != 0)
+      throw std::invalid_argument("gecko._core: designs must be a flat array of 9 numbers per design");
+    const auto nd = static_cast<std::size_t>(designs.size() / 9);
+    const auto m_ft = static_cast<std::size_t>(Ft.size());
+    state_columns cols(static_cast<py::ssize_t>(nd * m_ft));
+    auto raw = cols.pointers();
+    const double* p = designs.data();
+    const double* f = Ft.data();
+    {
+      py::gil_scoped_release release;
+      // Validate every design first (raises the first error under errors="raise").
+      std::vector<char> ok(nd, 1);
+      for (std::size_t i = 0; i < nd; ++i) {
+        const auto s = design_from(p + 9 * i);
+        if (errors == static_cast<int>(on_error::nan)) ok[i] = detail::check_seta<double, nan_policy>(s, "gecko.seta_batch");
+        else detail::check_seta<double, default_policy>(s, "gecko.seta_batch");
+      }
+      const auto o = line_options(std::nan(""), tolerance);
+      std::vector<std::string> failures(static_cast<std::size_t>(threads > 0 ? threads : 1));
+      auto work = [&](std::size_t t, std::size_t nt) {
+        try {
+          std::vector<critical_state<double>> out;
+          for (std::size_t i = t; i < nd; i += nt) {
+            if (!ok[i]) {
+              for (std::size_t j = 0; j < m_ft; ++j) {
+                critical_state<double> bad;
+                bad.Ft = f[j];
+                bad.status = critical_status::invalid_input;
+                raw.put(i * m_ft + j, bad);
+              }
+              continue;
+            }
+            line_at(design_from(p + 9 * i), f, m_ft, errors, o, out);
+            for (std::size_t j = 0; j < m_ft; ++j) raw.put(i * m_ft + j, out[j]);
+          }
+        } catch (const std::exception& e) {
+          failures[t] = e.what();
+        }
+      };
+      const std::size_t nt = static_cast<std::size_t>(threads > 0 ? threads : 1);
+      if (nt == 1) {
+        work(0, 1);
+      } else {
+        std::vector<std::thread> pool;
+        for (std::size_t t = 0; t < nt; ++t) pool.emplace_back(work, t, nt);
+        for (auto& th : pool) th.join();
+      }
+      for (const auto& msg : failures)
+        if (!msg.empty()) throw std::domain_error(msg);
+    }
+    return cols.as_dict();
+  }, py::arg("designs"), py::arg("Ft"), py::arg("errors") = 0, py::arg("threads") = 1,
+     py::arg("tolerance") = std::nan(""));
+
+  // Single fiber: params = (EI, EA, l, alpha, w).
+  m.def("fiber_critical_line_at", [](const darray& params, const darray& Ft, int errors, double tolerance) {
+    if (params.ndim() != 1 || params.size() != 5)
+      throw std::invalid_argument("gecko._core: a single fiber is 5 numbers (EI, EA, l, alpha, w)");
+    const double* q = params.data();
+    SingleFiber<double> f;
+    f.EI = q[0]; f.EA = q[1]; f.l = q[2]; f.alpha = q[3]; f.w = q[4];
+    const auto n = static_cast<std::size_t>(Ft.size());
+    state_columns cols(static_cast<py::ssize_t>(n));
+    auto raw = cols.pointers();
+    const double* ft = Ft.data();
+    {
+      py::gil_scoped_release release;
+      std::vector<critical_state<double>> out(n);
+      const auto o = line_options(std::nan(""), tolerance);
+      if (errors == static_cast<int>(on_error::nan)) critical_line_at(f, ft, n, out.data(), o, nan_policy());
+      else critical_line_at(f, ft, n, out.data(), o, default_policy());
+      for (std::size_t i = 0; i < n; ++i) raw.put(i, out[i]);
+    }
+    return cols.as_dict();
+  }, py::arg("params"), py::arg("Ft"), py::arg("errors") = 0, py::arg("tolerance") = std::nan(""));
+
+  m.def("seta_small_deformation", [](const darray& params) {
+    const auto c = small_deformation(design_from(params));
+    py::dict d;
+    d["fn0"] = c.fn0;
+    d["slope_k"] = c.slope_k;
+    d["contact_length"] = c.contact_length;
+    d["non_sticky"] = c.non_sticky;
+    return d;
+  }, py::arg("params"));
+
+  m.def("kendall_fn", [](const darray& Ft, const darray& EA, const darray& w, int errors) {
+    const py::ssize_t n = Ft.size();
+    if (EA.size() != n || w.size() != n) throw std::invalid_argument("gecko._core: array arguments must have equal length");
+    py::array_t<double> out(n);
+    double* o = out.mutable_data();
+    const double *a = Ft.data(), *b = EA.data(), *c = w.data();
+    {
+      py::gil_scoped_release release;
+      for (py::ssize_t i = 0; i < n; ++i)
+        o[i] = errors == static_cast<int>(on_error::nan) ? kendall_fn(a[i], b[i], c[i], nan_policy())
+                                                         : kendall_fn(a[i], b[i], c[i], default_policy());
+    }
+    return out;
+  }, py::arg("Ft"), py::arg("EA"), py::arg("w"), py::arg("errors") = 0);
+
+  m.def("rivlin_fn", [](const darray& Ft, const darray& w, int errors) {
+    const py::ssize_t n = Ft.size();
+    if (w.size() != n) throw std::invalid_argument("gecko._core: array arguments must have equal length");
+    py::array_t<double> out(n);
+    double* o = out.mutable_data();
+    const double *a = Ft.data(), *c = w.data();
+    {
+      py::gil_scoped_release release;
+      for (py::ssize_t i = 0; i < n; ++i)
+        o[i] = errors == static_cast<int>(on_error::nan) ? rivlin_fn(a[i], c[i], nan_policy())
+                                                         : rivlin_fn(a[i], c[i], default_policy());
+    }
+    return out;
+  }, py::arg("Ft"), py::arg("w"), py::arg("errors") = 0);
+}
 
 }  // namespace bindings
 }  // namespace gecko

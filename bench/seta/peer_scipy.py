@@ -1,0 +1,69 @@
+#!/usr/bin/env python3
+"""Times the scipy peer (../shared/peers/critical_line_scipy.py) and the gecko Python call on the
+same 1000-point reference-scene line as bench_seta, in the same run (bench/seta/run.sh), and
+appends both rows to bench/results/seta.md / seta.csv.
+
+The peer's error is measured against gecko's own line (tolerance 1e-14, itself within 4e-14 of the
+mpmath references in tests/data/seta_reference.csv); the peer only handles monotone states, which
+the reference scene has up to Ft = 9.9.
+    python3 bench/seta/peer_scipy.py [path/to/critical_line_scipy.py] [--points 1000]
+"""
+import importlib.util
+import math
+import os
+import sys
+import time
+
+import numpy as np
+
+import gecko
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+
+
+def main():
+    peer_path = next((a for a in sys.argv[1:] if a.endswith(".py")),
+                     os.path.join(ROOT, "..", "shared", "peers", "critical_line_scipy.py"))
+    n = 1000
+    if "--points" in sys.argv:
+        n = int(sys.argv[sys.argv.index("--points") + 1])
+    spec = importlib.util.spec_from_file_location("peer", peer_path)
+    peer = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(peer)
+    Ft = np.linspace(0.0, 9.9, n)
+    seta = gecko.TwoLevelSeta()
+    ref = seta.critical_line(Ft=Ft, tolerance=1e-14).Fn
+    t = time.process_time()
+    line = peer.critical_line(peer.REFERENCE, Ft)
+    dt_peer = (time.process_time() - t) / n * 1e6
+    fn_peer = np.array([p[1] if p[3] else np.nan for p in line])
+    err_peer = np.nanmax(np.abs(fn_peer - ref) / np.maximum(1, np.abs(ref)))
+    failed_peer = int(np.sum(~np.isfinite(fn_peer)))
+    times = []
+    for _ in range(7):
+        t = time.process_time()
+        g = seta.critical_line(Ft=Ft)
+        times.append((time.process_time() - t) / n * 1e6)
+    dt_gecko = sorted(times)[3]
+    err_gecko = np.max(np.abs(g.Fn - ref) / np.maximum(1, np.abs(ref)))
+    rows = [("scipy peer (quad + fsolve)", "xtol 1e-13", dt_peer, err_peer, failed_peer),
+            ("gecko Python TwoLevelSeta.critical_line", "default", dt_gecko, err_gecko, int(np.sum(g.status != 0)))]
+    for r in rows:
+        print(f"{r[0]:40s} {r[1]:12s} {r[2]:10.3f} us/point  err vs gecko 1e-14: {r[3]:.1e}  failed {r[4]}")
+    out = os.path.join(ROOT, "bench", "results")
+    with open(os.path.join(out, "seta.csv"), "a") as f:
+        for r in rows:
+            f.write(f"{r[0]},{r[1]},{r[2]},{r[3]},{r[4]}\n")
+    with open(os.path.join(out, "seta.md"), "a") as f:
+        f.write("\nPython, same grid, same run (process CPU time; the peer's error is against gecko at "
+                "tolerance 1e-14, which matches the mpmath references to 4e-14):\n\n")
+        f.write("| method | setting | us/point | max rel. error of Fn | failed points |\n|---|---|---:|---:|---:|\n")
+        for r in rows:
+            f.write(f"| {r[0]} | {r[1]} | {r[2]:.3f} | {r[3]:.1e} | {r[4]} |\n")
+        f.write(f"\nSpeed-up of gecko (C++, default tolerance) over the scipy peer: see the first table; "
+                f"Python call overhead included here: {dt_peer / dt_gecko:.0f}x.\n")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,10 @@
+// gecko/friction.hpp — frictional adhesion dynamics of paper 000 (models.md §2): force traces,
+// detachment laws, steady sliding, the spatula simulation and the steady-sliding fit.
+#pragma once
+
+#include "gecko/friction/detachment.hpp"
+#include "gecko/friction/fit.hpp"
+#include "gecko/friction/force_trace.hpp"
+#include "gecko/friction/path.hpp"
+#include "gecko/friction/spatula_simulation.hpp"
+#include "gecko/friction/steady_sliding.hpp"

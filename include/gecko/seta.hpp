@@ -1,0 +1,21 @@
+// gecko/seta.hpp — the two-level seta of directional adhesion (models.md §1) and the single
+// fiber of He et al. 2013.
+//
+//   TwoLevelSeta<T>, ft_max                      the design (defaults: the paper's reference scene)
+//   elastica_segment(_length)                    one segment's length in Carlson form (EA = inf
+//                                                special-cased at compile time; turning points)
+//   solve_critical(seta, Ft[, guess, options])   one critical state (Newton, exact Jacobian)
+//   critical_line(seta, options)                 the line from Ft = 0 through folds to (Ft)max
+//   critical_line_at(seta, Ft...)                the line at given Ft values
+//   characteristics(seta)                        (Fn)0, k, max pull-off, (Ft)max, stickiness
+//   SingleFiber<T>                               the single-level fiber (Fig 4)
+#pragma once
+
+#include "gecko/seta/characteristics.hpp"
+#include "gecko/seta/critical_line.hpp"
+#include "gecko/seta/elastica_segment.hpp"
+#include "gecko/seta/solve_critical.hpp"
+#include "gecko/seta/two_level_seta.hpp"
+#include "gecko/seta/critical_equations.hpp"
+#include "gecko/seta/sensitivities.hpp"
+#include "gecko/seta/single_fiber.hpp"

@@ -1,0 +1,170 @@
+"""Python API of the two-level seta (python/gecko/seta.py): the contract of the design card
+(TwoLevelSeta defaults, .critical_line(Ft=array) -> Fn, theta_joint, status as numpy arrays, NaN
+where not solved), accuracy against the committed mpmath references, errors, and the batch call."""
+import csv
+import math
+import os
+
+import numpy as np
+import pytest
+
+import gecko
+
+DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "data")
+KEYS = ["EI1", "EI2", "EA1", "EA2", "l1", "l2", "alpha1", "alpha2", "w"]
+
+
+def test_defaults_are_the_reference_scene():
+    s = gecko.TwoLevelSeta()
+    assert (s.EI1, s.EI2, s.EA1, s.EA2, s.l1, s.l2, s.w) == (5.0, 2.0, math.inf, 50.0, 1.0, 0.1, 1.0)
+    assert s.alpha1 == pytest.approx(math.pi / 6, rel=1e-16) and s.alpha2 == pytest.approx(math.pi / 6, rel=1e-16)
+    assert s.ft_max == pytest.approx(10.0, rel=1e-16)
+
+
+def test_critical_line_contract_and_reference_scene():
+    s = gecko.TwoLevelSeta()
+    Ft = np.linspace(0.0, 9.9, 100)
+    line = s.critical_line(Ft=Ft)
+    for name in ("Fn", "theta_joint", "status"):
+        arr = getattr(line, name)
+        assert isinstance(arr, np.ndarray) and arr.shape == Ft.shape
+    assert np.all(line.status == 0)
+    assert line.Fn[0] == pytest.approx(0.2499037937772059726562097, abs=1e-13)
+    assert line.Fn.min() == pytest.approx(-2.80, abs=0.01)
+    # shape of Ft is kept
+    two_d = s.critical_line(Ft=Ft.reshape(10, 10))
+    assert two_d.Fn.shape == (10, 10)
+    np.testing.assert_array_equal(two_d.Fn.reshape(-1), line.Fn)
+
+
+def _reference_rows():
+    path = os.path.join(DATA, "seta_reference.csv")
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def test_matches_mpmath_references():
+    rows = _reference_rows()
+    assert len(rows) >= 300
+    designs = {}
+    for r in rows:
+        designs.setdefault(r["design_id"], []).append(r)
+    assert len(designs) >= 31
+    worst = 0.0
+    for rs in designs.values():
+        s = gecko.TwoLevelSeta(**{k: float(rs[0][k]) for k in KEYS})
+        Ft = np.array([float(r["Ft"]) for r in rs])
+        line = s.critical_line(Ft=Ft)
+        ref = np.array([float(r["Fn"]) for r in rs])
+        assert np.all(line.status == 0)
+        err = np.abs(line.Fn - ref) / np.maximum(1.0, np.abs(ref))
+        worst = max(worst, err.max())
+        np.testing.assert_array_equal(line.turning_points_beam, [int(r["turning_points_seg1"]) for r in rs])
+        np.testing.assert_array_equal(line.turning_points_spatula, [int(r["turning_points_seg2"]) for r in rs])
+    assert worst <= 1e-11
+
+
+def test_no_state_is_nan_with_status():
+    s = gecko.TwoLevelSeta(EI1=1.63413, EI2=1.15448, l2=0.382758, alpha1=0.694806, alpha2=0.288542,
+                           EA1=985.906, EA2=461.675)
+    line = s.critical_line(Ft=[-9.5, 0.0, -20.0])
+    assert list(line.status) == [2, 0, 2]
+    assert math.isnan(line.Fn[0]) and math.isnan(line.theta_joint[2])
+    assert not math.isnan(line.Fn[1])
+
+
+@pytest.mark.parametrize("kwargs, name", [
+    (dict(EI1=-1.0), "EI1"), (dict(EI2=0.0), "EI2"), (dict(EA1=0.0), "EA1"), (dict(EA2=-1.0), "EA2"),
+    (dict(l1=0.0), "l1"), (dict(l2=math.nan), "l2"), (dict(w=-2.0), "w"), (dict(alpha1=0.0), "alpha1"),
+    (dict(alpha1=1.6), "alpha1"), (dict(alpha2=-0.1), "alpha2"), (dict(alpha1=0.8, alpha2=0.8), "alpha1 + alpha2"),
+])
+def test_bad_design_raises_naming_parameter(kwargs, name):
+    with pytest.raises(ValueError, match=name.replace("+", r"\+")):
+        gecko.TwoLevelSeta(**kwargs)
+
+
+def test_ft_beyond_ft_max():
+    s = gecko.TwoLevelSeta()
+    with pytest.raises(ValueError, match=r"Ft = 10.5 .*\(Ft\)max"):
+        s.critical_line(Ft=[1.0, 10.5])
+    line = s.critical_line(Ft=[1.0, 10.5], errors="nan")
+    assert list(line.status) == [0, 5] and math.isnan(line.Fn[1])
+    with pytest.raises(ValueError, match="errors"):
+        s.critical_line(Ft=[1.0], errors="ignore")
+
+
+def test_traced_line_and_characteristics():
+    s = gecko.TwoLevelSeta()
+    line = s.critical_line()
+    assert "Ft)max" in line.end and line.Ft[-1] == pytest.approx(10.0, rel=1e-14)
+    c = s.characteristics()
+    assert c.fn0 == pytest.approx(0.2499037937772059726562097, abs=1e-13)
+    assert c.max_pull_off == pytest.approx(2.802412557605301074597652, rel=1e-12)
+    assert c.ft_at_min_fn == pytest.approx(7.123205952979077, rel=1e-7)
+    assert not c.sticky_at_rest and c.small_non_sticky
+    assert c.small_fn0 == pytest.approx(0.3396, abs=1e-3)
+    assert s.small_deformation_fn(0.0) == pytest.approx(c.small_fn0)
+
+
+def test_solve_with_and_without_guess():
+    s = gecko.TwoLevelSeta()
+    a = s.solve(5.0)
+    b = s.solve(5.0, (-2.4, 1.49))
+    assert a["status"] == 0 and b["status"] == 0
+    assert a["Fn"] == pytest.approx(b["Fn"], abs=1e-13)
+
+
+def test_peel_lines_vectorised():
+    Ft = np.array([0.0, 1.0, 5.0])
+    k = gecko.kendall_fn(Ft, 50.0, 1.0)
+    N2 = k ** 2 + Ft ** 2
+    np.testing.assert_allclose(np.sqrt(N2) + N2 / 100.0 - Ft - 1.0, 0.0, atol=1e-14)
+    assert gecko.rivlin_fn(2.0, 1.0) == pytest.approx(-math.sqrt(5.0), rel=1e-15)
+    np.testing.assert_allclose(gecko.kendall_fn(Ft, math.inf, 1.0), gecko.rivlin_fn(Ft, 1.0), rtol=1e-15)
+    with pytest.raises(ValueError, match="Ft"):
+        gecko.rivlin_fn(-1.0, 1.0)
+    assert math.isnan(gecko.rivlin_fn(-1.0, 1.0, errors="nan"))
+
+
+def test_batch_equals_serial_bitwise_and_thread_independent():
+    designs = [gecko.TwoLevelSeta(), gecko.TwoLevelSeta(EI1=3.0, EA2=80.0),
+               gecko.TwoLevelSeta(EI1=1.63413, EI2=1.15448, l2=0.382758, alpha1=0.694806, alpha2=0.288542,
+                                  EA1=985.906, EA2=461.675)]
+    Ft = np.array([0.0, 0.5, 2.0, 4.0, -1.0])
+    one = gecko.critical_line_batch(designs, Ft, threads=1)
+    two = gecko.critical_line_batch(designs, Ft, threads=2)
+    np.testing.assert_array_equal(one.Fn, two.Fn)
+    np.testing.assert_array_equal(one.status, two.status)
+    for i, d in enumerate(designs):
+        serial = d.critical_line(Ft=Ft)
+        np.testing.assert_array_equal(one.Fn[i], serial.Fn)
+        np.testing.assert_array_equal(one.theta_joint[i], serial.theta_joint)
+    # designs as a (n, 9) array
+    arr = np.array([[getattr(d, k) for k in KEYS] for d in designs])
+    np.testing.assert_array_equal(gecko.critical_line_batch(arr, Ft, threads=2).Fn, one.Fn)
+    bad = arr.copy()
+    bad[1, 0] = -1.0
+    with pytest.raises(ValueError, match="EI1"):
+        gecko.critical_line_batch(bad, Ft)
+    res = gecko.critical_line_batch(bad, Ft, errors="nan", threads=2)
+    assert np.all(res.status[1] == 5) and np.all(np.isnan(res.Fn[1]))
+    np.testing.assert_array_equal(res.Fn[0], one.Fn[0])
+
+
+def test_exports():
+    for name in ("TwoLevelSeta", "kendall_fn", "rivlin_fn", "critical_line_batch"):
+        assert name in gecko.__all__ and hasattr(gecko, name)
+
+
+def test_single_fiber():
+    f = gecko.SingleFiber()
+    assert (f.EI, f.EA, f.l, f.w) == (0.5, 50.0, 1.0, 1.0) and f.alpha == pytest.approx(math.pi / 3)
+    line = f.critical_line(Ft=np.array([0.0, 1.0, 5.0, 9.9]))
+    assert np.all(line.status == 0) and np.all(np.isnan(line.theta_joint))
+    # Verified against an RK4 shooting in tests/seta/single_fiber.cpp; here: value at Ft = 0 and the
+    # turning point at rest (the fiber is sticky at rest and inflected).
+    assert line.Fn[0] == pytest.approx(-1.624169892931951, abs=1e-12)
+    assert line.turning_points_beam[0] == 1
+    with pytest.raises(ValueError, match="alpha"):
+        gecko.SingleFiber(alpha=2.0)
+    assert "SingleFiber" in gecko.__all__

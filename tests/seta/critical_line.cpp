@@ -1,0 +1,232 @@
+// Tests of gecko/seta/critical_line.hpp (and solve_critical): the critical line of the two-level
+// seta against the independent references of tests/data/gen_seta_reference.py (mpmath ODE
+// shooting and quadrature, 25 digits), and against an in-test RK4 shooting of eqs 1-5.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "gecko/seta/critical_line.hpp"
+#include "seta/seta_shooting.hpp"
+
+namespace {
+
+double parse(const std::string& s) {
+  if (s == "inf") return std::numeric_limits<double>::infinity();
+  if (s.empty()) return std::numeric_limits<double>::quiet_NaN();
+  return std::stod(s);
+}
+
+struct csv {
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+  int col(const std::string& name) const {
+    for (std::size_t i = 0; i < header.size(); ++i)
+      if (header[i] == name) return static_cast<int>(i);
+    FAIL("missing column " << name);
+    return -1;
+  }
+};
+
+csv read_csv(const std::string& path) {
+  csv out;
+  std::ifstream in(path);
+  std::string line;
+  auto split = [](const std::string& l) {
+    std::vector<std::string> cells;
+    std::stringstream ss(l);
+    std::string cell;
+    while (std::getline(ss, cell, ',')) cells.push_back(cell);
+    if (!l.empty() && l.back() == ',') cells.push_back("");
+    return cells;
+  };
+  if (!std::getline(in, line)) return out;
+  out.header = split(line);
+  while (std::getline(in, line))
+    if (!line.empty()) out.rows.push_back(split(line));
+  return out;
+}
+
+gecko::TwoLevelSeta<double> design_of(const csv& t, const std::vector<std::string>& r) {
+  gecko::TwoLevelSeta<double> s;
+  s.EI1 = parse(r[t.col("EI1")]);
+  s.EI2 = parse(r[t.col("EI2")]);
+  s.EA1 = parse(r[t.col("EA1")]);
+  s.EA2 = parse(r[t.col("EA2")]);
+  s.l1 = parse(r[t.col("l1")]);
+  s.l2 = parse(r[t.col("l2")]);
+  s.alpha1 = parse(r[t.col("alpha1")]);
+  s.alpha2 = parse(r[t.col("alpha2")]);
+  s.w = parse(r[t.col("w")]);
+  return s;
+}
+
+const std::string reference_path = std::string(GECKO_TEST_DATA_DIR) + "/seta_reference.csv";
+
+}  // namespace
+
+TEST_CASE("critical line matches the independent references (mpmath ODE + quadrature)", "[seta][line][reference]") {
+  const csv t = read_csv(reference_path);
+  REQUIRE(t.rows.size() >= 300);  // the reference table must exist (tests/data/gen_seta_reference.py)
+  std::map<int, std::vector<std::size_t>> by_design;
+  for (std::size_t i = 0; i < t.rows.size(); ++i) by_design[std::stoi(t.rows[i][t.col("design_id")])].push_back(i);
+  REQUIRE(by_design.size() >= 31);  // reference scene + at least 30 random designs
+  int states = 0, matched = 0, with_turning = 0, sticky_states = 0, large_ft = 0;
+  double worst = 0, worst_beta = 0;
+  for (const auto& [id, rows] : by_design) {
+    const auto s = design_of(t, t.rows[rows.front()]);
+    std::vector<double> Ft;
+    for (std::size_t i : rows) Ft.push_back(parse(t.rows[i][t.col("Ft")]));
+    const auto got = gecko::critical_line_at(s, Ft);
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      const auto& r = t.rows[rows[k]];
+      const double Fn = parse(r[t.col("Fn")]), beta = parse(r[t.col("theta_joint")]);
+      const int tp1 = std::stoi(r[t.col("turning_points_seg1")]), tp2 = std::stoi(r[t.col("turning_points_seg2")]);
+      ++states;
+      if (tp1 + tp2 > 0) ++with_turning;
+      if (std::stoi(r[t.col("branch")]) == 0 && Ft[k] >= 0 && std::isfinite(s.EA2) && Ft[k] > 0.9 * gecko::ft_max(s)) ++large_ft;
+      INFO("design " << id << " Ft " << Ft[k] << " ref Fn " << Fn << " got " << got[k].Fn << " status "
+                     << static_cast<int>(got[k].status));
+      // Every reference state lies on the line followed from Ft = 0 (branch 0): it must be found.
+      REQUIRE(got[k].status == gecko::critical_status::converged);
+      const double err = std::fabs(got[k].Fn - Fn) / std::max(1.0, std::fabs(Fn));
+      worst = std::max(worst, err);
+      worst_beta = std::max(worst_beta, std::fabs(got[k].theta_joint - beta));
+      CHECK(err <= 1e-11);
+      CHECK(std::fabs(got[k].theta_joint - beta) <= 1e-11);
+      CHECK(got[k].turning_points_beam == tp1);
+      CHECK(got[k].turning_points_spatula == tp2);
+      if (err <= 1e-11) ++matched;
+    }
+    if (got.front().Fn < 0) sticky_states += static_cast<int>(rows.size());
+  }
+  CHECK(with_turning > 50);
+  CHECK(sticky_states > 50);
+  WARN("reference states " << states << ", matched " << matched << ", with turning points " << with_turning
+                           << ", in sticky designs " << sticky_states << ", worst |dFn|/max(1,|Fn|) " << worst
+                           << ", worst |dbeta| " << worst_beta << ", states above 0.9 (Ft)max " << large_ft);
+}
+
+TEST_CASE("reference scene: natural state, pull-off and line end", "[seta][line]") {
+  const gecko::TwoLevelSeta<double> s;  // the paper's reference scene (defaults)
+  const auto line = gecko::critical_line(s);
+  REQUIRE(line.natural.status == gecko::critical_status::converged);
+  // (Fn)0 from the scipy peer and the mpmath reference: 0.24990379377720597...
+  CHECK(std::fabs(line.natural.Fn - 0.2499037937772059726562097) < 1e-13);
+  CHECK(line.end == gecko::line_end::reached_ft_max);
+  CHECK(line.points.back().Ft == Approx(10.0).epsilon(1e-14));
+  // Fn at the end of the line, reference -0.36249408996184051...
+  CHECK(std::fabs(line.points.back().Fn - -0.3624940899618405101778407) < 1e-9);
+  double min_fn = 0;
+  for (const auto& p : line.points) min_fn = std::min(min_fn, p.Fn);
+  CHECK(min_fn == Approx(-2.80).margin(0.02));
+}
+
+TEST_CASE("states agree with an RK4 shooting of the governing ODE", "[seta][line][shooting]") {
+  // Designs chosen to cover: reference scene, sticky at rest with turning points, EA finite.
+  std::vector<gecko::TwoLevelSeta<double>> designs(3);
+  designs[1].EI1 = 1.63413; designs[1].EI2 = 1.15448; designs[1].l2 = 0.382758;
+  designs[1].alpha1 = 0.694806; designs[1].alpha2 = 0.288542; designs[1].EA1 = 985.906; designs[1].EA2 = 461.675;
+  designs[2].EI1 = 0.883755; designs[2].EI2 = 0.0823395; designs[2].l2 = 0.196211;
+  designs[2].alpha1 = 0.463326; designs[2].alpha2 = 0.638599; designs[2].EA2 = 100.03;
+  int turning = 0;
+  for (const auto& s : designs) {
+    const double fm = gecko::ft_max(s);
+    std::vector<double> Ft;
+    for (double f : {0.0, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99, -0.1}) Ft.push_back(f * fm);
+    const auto got = gecko::critical_line_at(s, Ft);
+    for (const auto& st : got) {
+      INFO("EI1 " << s.EI1 << " Ft " << st.Ft << " status " << static_cast<int>(st.status));
+      REQUIRE(st.status == gecko::critical_status::converged);
+      const auto shot = seta_test::shoot(s, st.Fn, st.Ft);
+      const long double err = seta_test::fn_error(s, st.Fn, st.Ft);
+      CHECK(std::fabs(static_cast<double>(err)) <= 1e-11 * std::max(1.0, std::fabs(st.Fn)));
+      CHECK(std::fabs(static_cast<double>(shot.theta_joint - st.theta_joint)) < 1e-11);
+      CHECK(shot.sign_changes_beam == st.turning_points_beam);
+      CHECK(shot.sign_changes_spatula == st.turning_points_spatula);
+      turning += st.turning_points_beam + st.turning_points_spatula > 0;
+    }
+  }
+  CHECK(turning >= 5);
+}
+
+TEST_CASE("solve_critical from a guess and without one", "[seta][solve]") {
+  const gecko::TwoLevelSeta<double> s;
+  const auto a = gecko::solve_critical(s, 5.0, gecko::critical_guess<double>{-2.4, 1.49});
+  REQUIRE(a.status == gecko::critical_status::converged);
+  CHECK(a.iterations > 0);
+  const auto b = gecko::solve_critical(s, 5.0);
+  REQUIRE(b.status == gecko::critical_status::converged);
+  CHECK(std::fabs(a.Fn - b.Fn) < 1e-13);
+  CHECK(std::fabs(a.theta_joint - b.theta_joint) < 1e-13);
+}
+
+TEST_CASE("EA = 1e12 is continuous with EA = infinity", "[seta][line]") {
+  gecko::TwoLevelSeta<double> a, b;
+  a.EA2 = std::numeric_limits<double>::infinity();
+  b.EA2 = 1e12;
+  a.EA1 = std::numeric_limits<double>::infinity();
+  b.EA1 = 1e12;
+  const std::vector<double> Ft = {0.0, 2.0, 5.0, 8.0};
+  const auto ra = gecko::critical_line_at(a, Ft);
+  const auto rb = gecko::critical_line_at(b, Ft);
+  for (std::size_t i = 0; i < Ft.size(); ++i) {
+    REQUIRE(ra[i].status == gecko::critical_status::converged);
+    REQUIRE(rb[i].status == gecko::critical_status::converged);
+    // O(1/EA) difference: Fn ~ 10 => ~1e-11
+    CHECK(std::fabs(ra[i].Fn - rb[i].Fn) < 1e-9);
+  }
+}
+
+TEST_CASE("no critical state is reported in status, never as a number", "[seta][status]") {
+  gecko::TwoLevelSeta<double> s;
+  s.EI1 = 1.63413; s.EI2 = 1.15448; s.l2 = 0.382758; s.alpha1 = 0.694806; s.alpha2 = 0.288542;
+  s.EA1 = 985.906; s.EA2 = 461.675;
+  // This line folds back near Ft = -8.6: no critical state further left.
+  const std::vector<double> Ft = {-9.5, -20.0, -40.0};
+  const auto r = gecko::critical_line_at(s, Ft);
+  for (const auto& x : r) {
+    CHECK(x.status == gecko::critical_status::no_critical_state);
+    CHECK(std::isnan(x.Fn));
+    CHECK(std::isnan(x.theta_joint));
+  }
+  const auto line = gecko::critical_line(s, gecko::critical_line_options<double>{-9.5});
+  CHECK(line.end == gecko::line_end::turned_back);
+  REQUIRE(line.folds.size() == 1);
+  CHECK(line.folds[0] == Approx(-8.6).margin(0.05));
+}
+
+TEST_CASE("bad input names the parameter and its range", "[seta][errors]") {
+  using gecko::TwoLevelSeta;
+  auto throws_with = [](TwoLevelSeta<double> s, const char* name) {
+    CHECK_THROWS_WITH(gecko::solve_critical(s, 1.0), Catch::Contains(name) && Catch::Contains("need"));
+  };
+  TwoLevelSeta<double> s;
+  s.EI1 = -1; throws_with(s, "EI1"); s = {};
+  s.EI2 = 0; throws_with(s, "EI2"); s = {};
+  s.EA1 = 0; throws_with(s, "EA1"); s = {};
+  s.EA2 = -5; throws_with(s, "EA2"); s = {};
+  s.l1 = 0; throws_with(s, "l1"); s = {};
+  s.l2 = std::numeric_limits<double>::quiet_NaN(); throws_with(s, "l2"); s = {};
+  s.w = -1; throws_with(s, "w"); s = {};
+  s.alpha1 = 0; throws_with(s, "alpha1"); s = {};
+  s.alpha1 = 1.6; throws_with(s, "alpha1"); s = {};
+  s.alpha2 = -0.1; throws_with(s, "alpha2"); s = {};
+  s.alpha1 = 0.8; s.alpha2 = 0.8; throws_with(s, "alpha1 + alpha2"); s = {};
+  CHECK_THROWS_WITH(gecko::solve_critical(s, 10.5), Catch::Contains("Ft") && Catch::Contains("(Ft)max"));
+  CHECK_THROWS_WITH(gecko::solve_critical(s, std::numeric_limits<double>::quiet_NaN()), Catch::Contains("Ft"));
+  // NaN policy: the bad element is reported in status, the others are solved.
+  std::vector<double> Ft = {1.0, 11.0, 2.0};
+  std::vector<gecko::critical_state<double>> out(3);
+  gecko::critical_line_at(s, Ft.data(), Ft.size(), out.data(), gecko::critical_line_options<double>(),
+                          gecko::policies::nan_policy());
+  CHECK(out[0].status == gecko::critical_status::converged);
+  CHECK(out[1].status == gecko::critical_status::invalid_input);
+  CHECK(std::isnan(out[1].Fn));
+  CHECK(out[2].status == gecko::critical_status::converged);
+}
