@@ -7,10 +7,15 @@
 //   solve_critical(seta, Ft[, guess, options])   one critical state (Newton, exact Jacobian)
 //   critical_line(seta, options)                 the line from Ft = 0 through folds to (Ft)max
 //   critical_line_at(seta, Ft...)                the line at given Ft values
+//   critical_line_batch(designs, Ft, threads)    many designs x many Ft, multithreaded
 //   characteristics(seta)                        (Fn)0, k, max pull-off, (Ft)max, stickiness
+//   critical_equations(seta, Ft, ...)            residual and exact Jacobian at a state
+//   sensitivities(seta, Ft)                      dFn/d(design) by implicit differentiation
+//   shape(seta, state)                           deformed shape x(s), z(s) of a solved state
 //   SingleFiber<T>                               the single-level fiber (Fig 4)
 #pragma once
 
+#include "gecko/seta/batch.hpp"
 #include "gecko/seta/characteristics.hpp"
 #include "gecko/seta/critical_line.hpp"
 #include "gecko/seta/elastica_segment.hpp"
@@ -18,4 +23,5 @@
 #include "gecko/seta/two_level_seta.hpp"
 #include "gecko/seta/critical_equations.hpp"
 #include "gecko/seta/sensitivities.hpp"
+#include "gecko/seta/shape.hpp"
 #include "gecko/seta/single_fiber.hpp"

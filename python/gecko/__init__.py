@@ -1,12 +1,18 @@
 """gecko — mechanics of gecko-like adhesion.
 
-Kernels (C++ header-only library, compiled here as ``gecko._core``):
+Compiled kernels (the C++ header-only library, built here as ``gecko._core``), wrapped per concern:
 
-* elliptic integrals: ``ellint_f``, ``ellint_e``, ``ellint_k``, ``ellint_ek`` and the Carlson
+* ``gecko.elliptic``: ``ellint_f``, ``ellint_e``, ``ellint_k``, ``ellint_ek`` and the Carlson
   symmetric forms ``carlson_rf``, ``carlson_rd``, ``carlson_rj``, ``carlson_rc``; all broadcast
   like numpy ufuncs and raise ``ValueError`` on a domain error (or give NaN with ``errors="nan"``).
+* ``gecko.seta``: ``TwoLevelSeta`` and its exact critical line of adhesion, ``SingleFiber``,
+  the Kendall and Rivlin peel lines, small-deformation formulas (models.md §1).
+* ``gecko.friction``: curved-beam rigidity, force traces, detachment laws, steady sliding,
+  spatula simulation and fitting (models.md §2).
+* ``gecko.scene``: declarative scenes (TOML or dict) that compute only what they ask for.
+  Plotting lives in ``gecko.plot`` and is not imported here (it imports matplotlib).
 
-Each concern lives in its own module and lists its public names in its own ``__all__``.
+Each concern lists its public names in its own ``__all__``.
 """
 from ._core import __version__
 from . import elliptic as _elliptic
@@ -15,5 +21,7 @@ from . import seta as _seta
 from .seta import *  # noqa: F401,F403
 from . import friction as _friction
 from .friction import *  # noqa: F401,F403
+from .scene import SceneError, load_scene, run_scene, validate_scene
 
-__all__ = ["__version__", *_elliptic.__all__, *_seta.__all__, *_friction.__all__]
+__all__ = ["__version__", *_elliptic.__all__, *_seta.__all__, *_friction.__all__,
+           "SceneError", "load_scene", "run_scene", "validate_scene"]

@@ -192,6 +192,23 @@ class TwoLevelSeta:
         d["folds"] = list(d["folds"])
         return SetaCharacteristics(**d)
 
+    def sensitivities(self, Ft) -> dict:
+        """Exact derivatives of the critical state with respect to the design, by implicit
+        differentiation of the converged residual: ``dFn`` and ``dtheta_joint`` of shape
+        (len(Ft), 9), columns in the order of ``TwoLevelSeta._FIELDS`` (EI1, EI2, EA1, EA2, l1, l2,
+        alpha1, alpha2, w); Ft held fixed; NaN rows where ``status != 0``."""
+        ft = np.ascontiguousarray(np.atleast_1d(np.asarray(Ft, dtype=np.float64)).reshape(-1))
+        d = dict(_core.seta_sensitivities(self._params(), ft))
+        d["parameters"] = list(self._FIELDS)
+        return d
+
+    def shape(self, Ft: float, steps: int = 200) -> dict:
+        """Deformed shape of the critical state at ``Ft`` (computed only when asked for): arrays
+        ``s, x, z, theta`` from the base (s = 0) to the contact edge (z = 0), by RK4 integration
+        of the governing equations from the solved base state (``steps`` per segment, O(h^4));
+        ``closing_error`` = theta(a) - pi/2 of the integration."""
+        return dict(_core.seta_shape(self._params(), float(Ft), int(steps)))
+
     def small_deformation(self) -> dict:
         """The linear theory (eqs 7, 18-22): fn0, slope_k, contact_length, non_sticky."""
         return dict(_core.seta_small_deformation(self._params()))

@@ -6,8 +6,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
-#include <string>
-#include <thread>
 #include <vector>
 
 #include <pybind11/stl.h>
@@ -218,49 +216,68 @@ void bind_seta(py::module_& m) {
     const double* f = Ft.data();
     {
       py::gil_scoped_release release;
-      // Validate every design first (raises the first error under errors="raise").
-      std::vector<char> ok(nd, 1);
-      for (std::size_t i = 0; i < nd; ++i) {
-        const auto s = design_from(p + 9 * i);
-        if (errors == static_cast<int>(on_error::nan)) ok[i] = detail::check_seta<double, nan_policy>(s, "gecko.seta_batch");
-        else detail::check_seta<double, default_policy>(s, "gecko.seta_batch");
-      }
+      std::vector<TwoLevelSeta<double>> ds(nd);
+      for (std::size_t i = 0; i < nd; ++i) ds[i] = design_from(p + 9 * i);
+      std::vector<critical_state<double>> out(nd * m_ft);
       const auto o = line_options(std::nan(""), tolerance);
-      std::vector<std::string> failures(static_cast<std::size_t>(threads > 0 ? threads : 1));
-      auto work = [&](std::size_t t, std::size_t nt) {
-        try {
-          std::vector<critical_state<double>> out;
-          for (std::size_t i = t; i < nd; i += nt) {
-            if (!ok[i]) {
-              for (std::size_t j = 0; j < m_ft; ++j) {
-                critical_state<double> bad;
-                bad.Ft = f[j];
-                bad.status = critical_status::invalid_input;
-                raw.put(i * m_ft + j, bad);
-              }
-              continue;
-            }
-            line_at(design_from(p + 9 * i), f, m_ft, errors, o, out);
-            for (std::size_t j = 0; j < m_ft; ++j) raw.put(i * m_ft + j, out[j]);
-          }
-        } catch (const std::exception& e) {
-          failures[t] = e.what();
-        }
-      };
-      const std::size_t nt = static_cast<std::size_t>(threads > 0 ? threads : 1);
-      if (nt == 1) {
-        work(0, 1);
-      } else {
-        std::vector<std::thread> pool;
-        for (std::size_t t = 0; t < nt; ++t) pool.emplace_back(work, t, nt);
-        for (auto& th : pool) th.join();
-      }
-      for (const auto& msg : failures)
-        if (!msg.empty()) throw std::domain_error(msg);
+      const unsigned nt = threads > 0 ? static_cast<unsigned>(threads) : 1u;
+      if (errors == static_cast<int>(on_error::nan)) critical_line_batch(ds.data(), nd, f, m_ft, out.data(), nt, o, nan_policy());
+      else critical_line_batch(ds.data(), nd, f, m_ft, out.data(), nt, o, default_policy());
+      for (std::size_t i = 0; i < out.size(); ++i) raw.put(i, out[i]);
     }
     return cols.as_dict();
   }, py::arg("designs"), py::arg("Ft"), py::arg("errors") = 0, py::arg("threads") = 1,
      py::arg("tolerance") = std::nan(""));
+
+  // dFn/d(design) and dtheta_joint/d(design) at the line's states: (n, 9) arrays, columns in the
+  // design order (EI1, EI2, EA1, EA2, l1, l2, alpha1, alpha2, w).
+  m.def("seta_sensitivities", [](const darray& params, const darray& Ft) {
+    const auto s = design_from(params);
+    const auto n = static_cast<std::size_t>(Ft.size());
+    std::vector<double> ft(Ft.data(), Ft.data() + n);
+    std::vector<critical_sensitivity<double>> r;
+    {
+      py::gil_scoped_release release;
+      r = sensitivities(s, ft);
+    }
+    py::array_t<double> dfn({static_cast<py::ssize_t>(n), py::ssize_t(9)}), db({static_cast<py::ssize_t>(n), py::ssize_t(9)});
+    py::array_t<std::int32_t> status(static_cast<py::ssize_t>(n));
+    py::array_t<double> Fn(static_cast<py::ssize_t>(n));
+    for (std::size_t i = 0; i < n; ++i) {
+      for (std::size_t j = 0; j < 9; ++j) {
+        dfn.mutable_data()[9 * i + j] = r[i].dFn[j];
+        db.mutable_data()[9 * i + j] = r[i].dtheta_joint[j];
+      }
+      status.mutable_data()[i] = static_cast<std::int32_t>(r[i].state.status);
+      Fn.mutable_data()[i] = r[i].state.Fn;
+    }
+    py::dict d;
+    d["dFn"] = dfn;
+    d["dtheta_joint"] = db;
+    d["status"] = status;
+    d["Fn"] = Fn;
+    return d;
+  }, py::arg("params"), py::arg("Ft"));
+
+  m.def("seta_shape", [](const darray& params, double Ft, int steps) {
+    const auto s = design_from(params);
+    seta_shape<double> sh;
+    critical_state<double> st;
+    {
+      py::gil_scoped_release release;
+      st = solve_critical(s, Ft);
+      sh = shape(s, st, steps);
+    }
+    py::dict d;
+    d["s"] = py::array_t<double>(static_cast<py::ssize_t>(sh.s.size()), sh.s.data());
+    d["x"] = py::array_t<double>(static_cast<py::ssize_t>(sh.x.size()), sh.x.data());
+    d["z"] = py::array_t<double>(static_cast<py::ssize_t>(sh.z.size()), sh.z.data());
+    d["theta"] = py::array_t<double>(static_cast<py::ssize_t>(sh.theta.size()), sh.theta.data());
+    d["closing_error"] = sh.closing_error;
+    d["status"] = static_cast<int>(st.status);
+    d["Fn"] = st.Fn;
+    return d;
+  }, py::arg("params"), py::arg("Ft"), py::arg("steps") = 200);
 
   // Single fiber: params = (EI, EA, l, alpha, w).
   m.def("fiber_critical_line_at", [](const darray& params, const darray& Ft, int errors, double tolerance) {

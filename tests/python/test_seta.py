@@ -168,3 +168,30 @@ def test_single_fiber():
     with pytest.raises(ValueError, match="alpha"):
         gecko.SingleFiber(alpha=2.0)
     assert "SingleFiber" in gecko.__all__
+
+
+def test_sensitivities_against_finite_differences():
+    s = gecko.TwoLevelSeta()
+    sens = s.sensitivities([0.0, 5.0])
+    assert sens["dFn"].shape == (2, 9) and list(sens["status"]) == [0, 0]
+    assert sens["parameters"][0] == "EI1"
+    assert sens["dFn"][0, 2] == 0.0  # EA1 = inf
+    for j, name in enumerate(sens["parameters"]):
+        v = getattr(s, name)
+        if math.isinf(v):
+            continue
+        h = 1e-5 * abs(v)
+        kp = {k: getattr(s, k) for k in KEYS}
+        km = dict(kp)
+        kp[name] = v + h
+        km[name] = v - h
+        fp = gecko.TwoLevelSeta(**kp).critical_line(Ft=[0.0, 5.0]).Fn
+        fm = gecko.TwoLevelSeta(**km).critical_line(Ft=[0.0, 5.0]).Fn
+        np.testing.assert_allclose(sens["dFn"][:, j], (fp - fm) / (2 * h), rtol=1e-6, atol=1e-6)
+
+
+def test_shape():
+    s = gecko.TwoLevelSeta()
+    sh = s.shape(5.0, steps=200)
+    assert sh["status"] == 0 and len(sh["x"]) == 401
+    assert abs(sh["closing_error"]) < 1e-10 and sh["z"][-1] == 0.0 and sh["z"][0] > 0

@@ -199,6 +199,16 @@ TEST_CASE("no critical state is reported in status, never as a number", "[seta][
   CHECK(line.end == gecko::line_end::turned_back);
   REQUIRE(line.folds.size() == 1);
   CHECK(line.folds[0] == Approx(-8.6).margin(0.05));
+  // The line is followed around the fold: the nodes after it (branch 1) are genuine states too
+  // (corrector tolerance 1e-10 along the traced line; checked by the RK4 shooting).
+  int after = 0;
+  for (const auto& p : line.points) {
+    if (p.branch != 1) continue;
+    ++after;
+    INFO("branch 1 node Ft " << p.Ft << " Fn " << p.Fn);
+    CHECK(std::fabs(static_cast<double>(seta_test::fn_error(s, p.Fn, p.Ft))) <= 1e-9 * std::max(1.0, std::fabs(p.Fn)));
+  }
+  CHECK(after >= 5);
 }
 
 TEST_CASE("bad input names the parameter and its range", "[seta][errors]") {

@@ -30,7 +30,11 @@ struct critical_line_options {
   // End of the followed range. NaN: (Ft)max for finite EA2, else 3 sqrt(EI1 w)/l1 (an arbitrary
   // but stated scale: the inextensible line has no (Ft)max). Negative: follow towards negative Ft.
   T ft_end = std::numeric_limits<T>::quiet_NaN();
-  T tolerance = T(1e-12);       // Newton tolerance of the states at requested Ft values
+  // Newton tolerance of the states at requested Ft values: a state is accepted when the scaled
+  // correction (|dFn|/max(1,|Fn|), |dbeta|, rates relative) is below it, or when the
+  // Newton-Kantorovich bound omega/2 |dz|^2 of the error after the first step is (omega estimated
+  // by the continuation; gecko/seta/detail/newton.hpp).
+  T tolerance = T(1e-12);
   T line_tolerance = T(1e-10);  // corrector tolerance of the traced nodes
   int max_points = 100000;
 };
@@ -59,23 +63,27 @@ inline T default_ft_end(const TwoLevelSeta<T>& s) {
 }
 
 // The natural state at Ft = 0 by homotopy (see the header comment).
+// Returns converged, or why not (unsupported_state when the homotopy runs into states whose
+// axial load reaches EA, outside the model's forms).
 template <class System>
-inline bool natural_state(const System& sys, typename System::vec& z, typename System::plan_type& plan,
-                          int& iterations) {
+inline critical_status natural_state(const System& sys, typename System::vec& z, typename System::plan_type& plan,
+                                     int& iterations) {
   using T = typename System::value_type;
   iterations = 0;
   T lam = T(0.02);
   bool started = false;
+  critical_status last = critical_status::not_converged;
   for (int attempt = 0; attempt < 4 && !started; ++attempt) {
     const System hs = sys.at_homotopy(lam);
     z = hs.small_deformation_state();
     plan = hs.plan(z, T(0));
     int its = 0;
-    started = solve_with_plans(hs, z, T(0), plan, T(1e-12), 40, its) == critical_status::converged;
+    last = solve_with_plans(hs, z, T(0), plan, T(1e-12), 40, its);
+    started = last == critical_status::converged;
     iterations += its;
     if (!started) lam *= T(0.25);
   }
-  if (!started) return false;
+  if (!started) return last;
   // As lambda -> 0 the state tends to (Fn, beta, p, q) = (0, pi/2, 0, 0): the previous point of
   // the first secant predictor.
   typename System::vec z_prev = z;
@@ -102,11 +110,13 @@ inline bool natural_state(const System& sys, typename System::vec& z, typename S
       lam = next;
       if (its <= 4) dl = dl * T(1.5) < T(0.25) ? dl * T(1.5) : T(0.25);
     } else {
+      last = st;
       dl *= T(0.5);
-      if (dl < T(1e-5)) return false;
+      if (dl < T(1e-5))
+        return last == critical_status::unsupported_state ? last : critical_status::not_converged;
     }
   }
-  return true;
+  return critical_status::converged;
 }
 
 template <class System, class T>
@@ -131,9 +141,10 @@ inline bool trace(const System& sys, T ft_stop, T scale, const critical_line_opt
                   typename System::vec& z0, typename System::plan_type& plan0, critical_state<T>& natural,
                   traced_line<System>& line) {
   int its = 0;
-  if (!natural_state(sys, z0, plan0, its)) {
-    natural.status = critical_status::not_converged;
-    line.end = line_end::no_natural_state;
+  const critical_status nat = natural_state(sys, z0, plan0, its);
+  if (nat != critical_status::converged) {
+    natural.status = nat;
+    line.end = nat == critical_status::unsupported_state ? line_end::unsupported_state : line_end::no_natural_state;
     return false;
   }
   natural = state_from(sys, z0, T(0), T(0), plan0, critical_status::converged, its);
@@ -150,12 +161,9 @@ inline bool trace(const System& sys, T ft_stop, T scale, const critical_line_opt
   copt.scale = scale;
   copt.tolerance = opt.line_tolerance;
   copt.max_nodes = opt.max_points;
-  // About one node per 10 outputs, between 1/100 and 8/100 of the range per step.
-#ifdef GECKO_SETA_NODE_FACTOR
-  const T per_output = T(GECKO_SETA_NODE_FACTOR) / static_cast<T>(outputs > 0 ? outputs : 1);
-#else
-  const T per_output = T(10) / static_cast<T>(outputs > 0 ? outputs : 1);
-#endif
+  // About one node per 30 outputs (measured best on the reference scene: the cubic Hermite
+  // guesses then take one Newton step), between 1/100 and 8/100 of the range per step.
+  const T per_output = T(30) / static_cast<T>(outputs > 0 ? outputs : 1);
   copt.max_step = per_output < T(0.01) ? T(0.01) : (per_output > T(0.08) ? T(0.08) : per_output);
   line = follow_line(sys, z0, T(0), plan0, ft_stop > 0 ? 1 : -1, copt);
   return true;
@@ -166,6 +174,15 @@ template <class System, class T>
 inline void evaluate_line(const System& sys, const traced_line<System>& line, const T* Ft, std::size_t count,
                           const std::size_t* which, T tol, critical_state<T>* out) {
   constexpr int n = System::n;
+  // The line is continuous, so the first crossing of a target lies in the first segment at whose
+  // end the running range [min, max] of the parameter over the nodes so far covers it; the
+  // running ranges only grow, so that segment is found by binary search.
+  const auto& all = line.nodes;
+  std::vector<T> run_lo(all.size()), run_hi(all.size());
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    run_lo[i] = i ? std::min(run_lo[i - 1], all[i].Ft) : all[i].Ft;
+    run_hi[i] = i ? std::max(run_hi[i - 1], all[i].Ft) : all[i].Ft;
+  }
   for (std::size_t k = 0; k < count; ++k) {
     const std::size_t idx = which[k];
     critical_state<T> r;
@@ -177,7 +194,21 @@ inline void evaluate_line(const System& sys, const traced_line<System>& line, co
     }
     const T target = sys.mu_of(Ft[idx]);
     const auto& nodes = line.nodes;
-    for (std::size_t i = 0; i + 1 < nodes.size() || (nodes.size() == 1 && i == 0); ++i) {
+    std::size_t first = 0;
+    if (nodes.size() > 1) {
+      std::size_t lo = 0, hi = nodes.size() - 1;  // smallest j with target in the running range at j
+      if (!(target >= run_lo[hi] && target <= run_hi[hi])) {
+        out[idx] = r;
+        continue;
+      }
+      while (lo < hi) {
+        const std::size_t mid = (lo + hi) / 2;
+        if (target >= run_lo[mid] && target <= run_hi[mid]) hi = mid;
+        else lo = mid + 1;
+      }
+      first = lo > 0 ? lo - 1 : 0;
+    }
+    for (std::size_t i = first; i + 1 < nodes.size() || (nodes.size() == 1 && i == 0); ++i) {
       if (nodes.size() == 1) {
         if (nodes[0].Ft == target) r = state_from(sys, nodes[0].z, Ft[idx], target, line.plans[0], critical_status::converged, 0);
         break;
@@ -260,7 +291,7 @@ inline void critical_line_at_imp(const TwoLevelSeta<T>& s, const T* Ft, std::siz
     if (!trace(sys, stop, scale, opt, which.size(), z0, plan0, natural, line)) {
       for (std::size_t i : which) {
         out[i].Ft = Ft[i];
-        out[i].status = critical_status::not_converged;
+        out[i].status = natural.status;
       }
       return;
     }

@@ -119,6 +119,8 @@ inline seta_geometry<E1, E2, S> make_seta_geometry(const seta_params<D>& d, cons
   g.h1 = (value_of(beta) - value_of(d.alpha2) - value_of(d.alpha1)) / 2;
   // Spatula: M2 = Ft + w.
   const S M2 = Ft + d.w;
+  S R2 = M2 - N * ub;
+  if constexpr (E2) R2 = R2 - d.c2 * N * N * ub * ub * T(0.5);
   g.spatula = make_segment<E2>(S(d.EI2), S(d.c2), M2, N);
   g.X3_s2 = p / seg_sqrt_f4(g.spatula, ub);
   // f3 at the contact edge: (w - c Ft^2/2) / f4 = w edge^2 / f4(Ft/N), no cancellation.
@@ -129,13 +131,11 @@ inline seta_geometry<E1, E2, S> make_seta_geometry(const seta_params<D>& d, cons
   S M1 = ratio * p * p + N * v;
   if constexpr (E1) M1 = M1 + d.c1 * N * N * v * v * T(0.5);
   g.beam = make_segment<E1>(S(d.EI1), S(d.c1), M1, N);
+  S R1 = M1 - N * u0;
+  if constexpr (E1) R1 = R1 - d.c1 * N * N * u0 * u0 * T(0.5);
   g.X3_s1 = q / seg_sqrt_f4(g.beam, u0);
   g.X3_e1 = sqrt(ratio) * p / seg_sqrt_f4(g.beam, v);
   // First integrals: p^2 = R2(u_beta), q^2 = R1(u0).
-  S R2 = M2 - N * ub;
-  if constexpr (E2) R2 = R2 - d.c2 * N * N * ub * ub * T(0.5);
-  S R1 = M1 - N * u0;
-  if constexpr (E1) R1 = R1 - d.c1 * N * N * u0 * u0 * T(0.5);
   g.F3 = p * p - R2;
   g.F4 = q * q - R1;
   if (angles) {

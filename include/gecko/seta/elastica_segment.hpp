@@ -250,8 +250,8 @@ struct segment_plan {
   segment_rep rep_s = segment_rep::turning_max, rep_e = segment_rep::turning_max;
   int shift_s = 0, shift_e = 0;  // 2 pi shifts of the ends when planned (informative only: the
                                  // forms recompute them, see phase_shift)
-  int periods = 0;               // extra full periods added (libration: 4K each)
-  int turning_points = 0;        // sign changes of theta' strictly inside the segment
+  int periods = 0;               // 4K added to unwrap the phase difference (libration)
+  int turning_points = 0;        // sign changes of theta' strictly inside, at the planned state
   segment_state state = segment_state::ok;
 };
 
@@ -259,12 +259,6 @@ inline bool operator==(const segment_plan& a, const segment_plan& b) {
   return a.direct == b.direct && a.libration == b.libration && a.rep_s == b.rep_s &&
          a.rep_e == b.rep_e &&
          a.periods == b.periods && a.state == b.state;
-}
-
-template <class T>
-inline int floor_int(T x) {
-  using std::floor;
-  return static_cast<int>(floor(x));
 }
 
 // The 2 pi shift that brings psi next to the centre of its form: -pi/2 (the libration window,

@@ -215,7 +215,7 @@ inline void fiber_line_at_imp(const SingleFiber<T>& f, const T* Ft, std::size_t 
     critical_state<T> natural;
     traced_line<System> line;
     if (!trace(sys, stop, std::max(fabs(stop), base_scale), opt, which.size(), z0, plan0, natural, line)) {
-      for (std::size_t i : which) out[i].status = critical_status::not_converged;
+      for (std::size_t i : which) out[i].status = natural.status;
       return;
     }
     evaluate_line(sys, line, Ft, which.size(), which.data(), opt.tolerance, out);

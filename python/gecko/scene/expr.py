@@ -1,0 +1,116 @@
+"""Safe arithmetic in scene files: ``alpha1 = "pi/3 - alpha2"``, ``Ft = [0, "0.9*ft_max"]``.
+
+TOML has no expressions, yet the papers' parameters are ``pi/6`` or one parameter derived from
+another (Fig 3c keeps alpha1 + alpha2 fixed). A string value is parsed with :mod:`ast` and only
+numbers, names, + - * / ** and a few functions are accepted: no attribute access, no calls of
+anything else, so a scene file can never run code.
+"""
+from __future__ import annotations
+
+import ast
+import functools
+import math
+from typing import Callable, Dict, Iterable, Mapping, Set
+
+from .errors import SceneError
+
+CONSTANTS: Dict[str, float] = {"pi": math.pi, "inf": math.inf, "e": math.e}
+
+FUNCTIONS: Dict[str, Callable] = {
+    "sqrt": math.sqrt, "sin": math.sin, "cos": math.cos, "tan": math.tan, "exp": math.exp,
+    "log": math.log, "log10": math.log10, "abs": abs, "min": min, "max": max,
+    "deg": math.radians,  # deg(30) = pi/6: angles may be written in degrees
+}
+
+_BINOPS = {ast.Add: lambda a, b: a + b, ast.Sub: lambda a, b: a - b, ast.Mult: lambda a, b: a * b,
+           ast.Div: lambda a, b: a / b, ast.Pow: lambda a, b: a ** b}
+_UNARY = {ast.USub: lambda a: -a, ast.UAdd: lambda a: a}
+
+
+def _parse(text: str, key: str) -> ast.Expression:
+    tree, reason = _checked(text)
+    if reason:
+        raise SceneError(reason, key=key)
+    return tree
+
+
+@functools.lru_cache(maxsize=1024)
+def _checked(text: str):
+    """(tree, None) for an allowed expression, else (None, why); cached: a sweep re-evaluates the
+    same few expressions for every design."""
+    try:
+        return _check(text), None
+    except SceneError as err:
+        return None, err.reason
+
+
+def _check(text: str, key: str = "") -> ast.Expression:
+    try:
+        tree = ast.parse(text.strip(), mode="eval")
+    except SyntaxError:
+        raise SceneError(f"cannot read the expression {text!r}: allowed are numbers, names, "
+                         "+ - * / ** ( ) and " + ", ".join(sorted(FUNCTIONS)), key=key) from None
+    for node in ast.walk(tree):
+        ok = isinstance(node, (ast.Expression, ast.BinOp, ast.UnaryOp, ast.Name, ast.Load, ast.Call,
+                               ast.operator, ast.unaryop)) or (
+            isinstance(node, ast.Constant) and isinstance(node.value, (int, float))
+            and not isinstance(node.value, bool))
+        if isinstance(node, ast.BinOp) and type(node.op) not in _BINOPS:
+            ok = False
+        if isinstance(node, ast.UnaryOp) and type(node.op) not in _UNARY:
+            ok = False
+        if isinstance(node, ast.Call) and not (isinstance(node.func, ast.Name) and node.func.id in FUNCTIONS
+                                               and not node.keywords):
+            ok = False
+        if not ok:
+            raise SceneError(f"the expression {text!r} uses something not allowed: only numbers, "
+                             "names, + - * / ** ( ) and the functions " + ", ".join(sorted(FUNCTIONS)),
+                             key=key)
+    return tree
+
+
+def names_in(text: str, key: str = "") -> Set[str]:
+    """The free names of an expression (constants and functions excluded)."""
+    _parse(text, key)
+    return set(_names(text))
+
+
+@functools.lru_cache(maxsize=1024)
+def _names(text: str) -> frozenset:
+    tree = _checked(text)[0]
+    called = {n.func.id for n in ast.walk(tree) if isinstance(n, ast.Call)}
+    return frozenset({n.id for n in ast.walk(tree) if isinstance(n, ast.Name)} - called - set(CONSTANTS))
+
+
+def evaluate(text: str, env: Mapping[str, float] = {}, key: str = "",
+             allowed: Iterable[str] = ()) -> float:
+    """Value of the expression ``text`` with the names in ``env`` (and pi, inf, e)."""
+    tree = _parse(text, key)
+
+    def ev(node):
+        if isinstance(node, ast.Expression):
+            return ev(node.body)
+        if isinstance(node, ast.Constant):
+            return float(node.value)
+        if isinstance(node, ast.Name):
+            if node.id in env:
+                return float(env[node.id])
+            if node.id in CONSTANTS:
+                return CONSTANTS[node.id]
+            names = sorted(set(CONSTANTS) | set(allowed) | set(env))
+            raise SceneError(f"unknown name {node.id!r} in {text!r}; allowed names: " + ", ".join(names),
+                             key=key)
+        if isinstance(node, ast.BinOp):
+            return _BINOPS[type(node.op)](ev(node.left), ev(node.right))
+        if isinstance(node, ast.UnaryOp):
+            return _UNARY[type(node.op)](ev(node.operand))
+        if isinstance(node, ast.Call):
+            return float(FUNCTIONS[node.func.id](*(ev(a) for a in node.args)))
+        raise SceneError(f"cannot evaluate {text!r}", key=key)  # unreachable after _parse
+
+    try:
+        return ev(tree)
+    except SceneError:
+        raise
+    except (ArithmeticError, ValueError, TypeError) as exc:
+        raise SceneError(f"cannot evaluate {text!r}: {exc}", key=key) from None

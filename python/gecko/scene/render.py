@@ -1,0 +1,114 @@
+"""Draw a scene's plots with :mod:`gecko.plot` (imported here only: no plot, no matplotlib)."""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import List, Sequence
+
+from .models import CHARACTERISTIC_LABELS
+
+
+def _figure(size):
+    from matplotlib.figure import Figure  # no pyplot: no GUI backend, no global state
+    return Figure(figsize=size, layout="constrained") if _has_layout() else Figure(figsize=size)
+
+
+def _has_layout() -> bool:
+    import inspect
+    from matplotlib.figure import Figure
+    return "layout" in inspect.signature(Figure.__init__).parameters
+
+
+_SYMBOLS = {"ratio": r"$EI_2/EI_1$", "EI2": r"$EI_2/(w l_1^2)$", "alpha2": r"$\alpha_2$ (rad)",
+            "alpha1": r"$\alpha_1$ (rad)", "l2": r"$l_2/l_1$", "EA2": r"$EA_2/w$", "EA1": r"$EA_1/w$"}
+
+
+def render_plot(scene, plot, curves, folder: Path, formats: Sequence[str]) -> List[str]:
+    from .. import plot as gp
+    opts = plot.options
+    kind = plot.kind
+    size = opts.get("size", (10.0, 4.2) if kind == "steady_sliding" else (6.4, 4.8))
+    fig = _figure(size)
+    if kind == "steady_sliding":
+        axes = fig.subplots(1, 2)
+    else:
+        axes = [fig.add_subplot(1, 1, 1)]
+    ax = axes[0]
+    if kind == "critical_line":
+        seta_i = 0
+        for c in curves:
+            if c.role in ("kendall", "rivlin"):
+                style = dict(gp._PEEL_STYLE[c.role])
+                ax.plot(c.x, c.y, label=c.label, **style)
+            elif c.role == "linear":
+                gp.linear_line(ax, c.x, c.y, label=c.label, color=f"C{max(seta_i - 1, 0)}")
+            else:
+                ax.plot(c.x, c.y, label=c.label, color=f"C{seta_i}",
+                        linestyle="-" if c.role == "seta" else (0, (5, 1.5)), linewidth=1.6)
+                seta_i += 1
+        gp.force_space_axes(ax, xlim=opts.get("xlim", gp.FORCE_SPACE_XLIM), ylim=opts.get("ylim", gp.FORCE_SPACE_YLIM))
+    elif kind == "characteristic":
+        for i, c in enumerate(curves):
+            gp.characteristic(ax, c.x, c.y, label=c.label, small=c.role == "small", color=f"C{i}")
+        ax.set_xlabel(_SYMBOLS.get(plot.x, plot.x))
+        ax.set_ylabel(", ".join(CHARACTERISTIC_LABELS.get(y, y).split(",")[0] for y in dict.fromkeys(
+            y.replace("small_", "") for y in plot.y)))
+        if any(c.yname.endswith("fn0") for c in curves):
+            ax.axhline(0.0, color="0.6", linewidth=0.8, zorder=0)
+    elif kind == "shapes":
+        gp.deformed_shapes(ax, [c.x for c in curves], [c.y for c in curves], [c.label for c in curves])
+    elif kind == "sensitivities":
+        for c in curves:
+            ax.plot(c.x, c.y, label=c.label)
+        ax.set_xlabel(gp.FT_LABEL)
+        ax.set_ylabel("sensitivity of the critical $F_n$")
+        ax.grid(True, linewidth=0.4, alpha=0.5)
+    elif kind == "force_trace":
+        for c in curves:
+            ax.plot(c.x, c.y, label=c.label, linestyle="-" if c.role == "f_par" else "--", linewidth=1.6)
+        ax.axhline(0.0, color="0.6", linewidth=0.8, zorder=0)
+        ax.set_xlabel("time $t$ (s)")
+        ax.set_ylabel("force (arbitrary units)")
+        ax.grid(True, linewidth=0.4, alpha=0.5)
+    elif kind == "force_space":
+        for c in curves:
+            gp.force_space(ax, c.x, c.y, arrows=opts.get("arrows", True), label=c.label, linewidth=1.6)
+    elif kind == "steady_sliding":
+        labels = {}
+        for c in curves:
+            a = axes[c.panel]
+            color = labels.setdefault(c.label, f"C{len(labels)}")
+            a.plot(c.x / 1e-6, c.y, label=c.label, color=color, linewidth=1.6)
+        for a, name in zip(axes, (r"shear force $\bar F_\parallel$ (N)", r"normal force $\bar F_\perp$ (N)")):
+            a.set_xlabel(r"drag velocity $V$ (µm/s)")
+            a.set_ylabel(name)
+            a.set_xscale(opts.get("xscale", "log"))
+            a.grid(True, which="both", linewidth=0.4, alpha=0.5)
+            a.axhline(0.0, color="0.6", linewidth=0.8, zorder=0)
+    for a in axes:
+        if kind not in ("critical_line", "steady_sliding"):
+            if "xlim" in opts:
+                a.set_xlim(*opts["xlim"])
+            if "ylim" in opts:
+                a.set_ylim(*opts["ylim"])
+        if "xscale" in opts and kind != "steady_sliding":
+            a.set_xscale(opts["xscale"])
+        if "yscale" in opts:
+            a.set_yscale(opts["yscale"])
+        if "xlabel" in opts:
+            a.set_xlabel(opts["xlabel"])
+        if "ylabel" in opts:
+            a.set_ylabel(opts["ylabel"])
+        legend = opts.get("legend", True)
+        if legend and a.get_legend_handles_labels()[0]:
+            a.legend(loc=legend if isinstance(legend, str) else "best", fontsize="small", framealpha=0.85)
+    title = opts.get("title", scene.title)
+    if title:
+        fig.suptitle(title, fontsize="medium")
+    if not _has_layout():
+        fig.tight_layout()
+    written = []
+    for fmt in formats:
+        name = f"{plot.name}.{fmt}"
+        fig.savefig(folder / name, dpi=150 if fmt == "png" else None, format=fmt)
+        written.append(name)
+    return written

@@ -1,0 +1,580 @@
+"""Run a planned scene: compute, collect the curves of every plot, write CSV and figures.
+
+Nothing is written until everything is computed and every figure is drawn: files go to a
+staging folder inside the output folder and are renamed into place at the end, so a failure
+leaves no half-written file behind.
+"""
+from __future__ import annotations
+
+import csv
+import io
+import math
+import os
+import shutil
+import tempfile
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Dict, List, Optional, Sequence
+
+import numpy as np
+
+from .errors import SceneError
+from .models import CHARACTERISTIC_LABELS
+from .planner import Plan, Step, plan_scene
+from .schema import DEFAULT_GRIDS, Point, Scene, Study, eval_grid, load_scene
+
+SETA_FIELDS = ("EI1", "EI2", "EA1", "EA2", "l1", "l2", "alpha1", "alpha2", "w")
+
+
+# ---- results ------------------------------------------------------------------------------------
+
+@dataclass
+class Curve:
+    """One plotted curve, ready for CSV and for :mod:`gecko.plot`."""
+
+    study: str
+    label: str
+    x: np.ndarray
+    y: np.ndarray
+    xname: str
+    yname: str
+    role: str = "line"        # seta, fiber, kendall, rivlin, linear, f_par, f_perp, shape, ...
+    panel: int = 0            # axes index for multi-panel plots
+    meta: Dict[str, Any] = field(default_factory=dict)
+
+
+@dataclass
+class RunResult:
+    scene: Scene
+    plan: Plan
+    data: Dict[str, List[Dict[str, Any]]]   # study name -> per design: output name -> data
+    curves: Dict[str, List[Curve]]          # plot name -> curves
+    files: List[Path] = field(default_factory=list)
+    seconds: float = 0.0
+
+
+class Progress:
+    """A one-line progress bar on a terminal, shown only for work longer than ``delay`` seconds."""
+
+    def __init__(self, total: int, label: str = "", stream=None, enabled: Optional[bool] = None,
+                 delay: float = 1.0):
+        import sys
+        self.stream = stream if stream is not None else sys.stderr
+        if enabled is None:
+            enabled = bool(getattr(self.stream, "isatty", lambda: False)())
+        self.enabled, self.total, self.label, self.delay = enabled, max(total, 1), label, delay
+        self.done, self.start, self.shown = 0, time.monotonic(), False
+
+    def advance(self, n: int = 1, what: str = "") -> None:
+        self.done += n
+        if not self.enabled or time.monotonic() - self.start < self.delay:
+            return
+        frac = min(self.done / self.total, 1.0)
+        bar = "#" * int(30 * frac) + "." * (30 - int(30 * frac))
+        self.stream.write(f"\r{self.label} [{bar}] {self.done}/{self.total} {what[:30]:<30}")
+        self.stream.flush()
+        self.shown = True
+
+    def close(self) -> None:
+        if self.shown:
+            self.stream.write("\r" + " " * 100 + "\r")
+            self.stream.flush()
+
+
+class Cache(dict):
+    """Results keyed by (kernel, design, grid); share one across runs to reuse invariants.
+    ``hits`` and ``misses`` count designs served from the cache and computed."""
+
+    def __init__(self):
+        super().__init__()
+        self.hits = 0
+        self.misses = 0
+
+
+def _key(*parts) -> tuple:
+    out = []
+    for p in parts:
+        if isinstance(p, np.ndarray):
+            out.append((p.shape, p.tobytes()))
+        elif isinstance(p, dict):
+            out.append(tuple(sorted((k, _key(v)) for k, v in p.items())))
+        elif isinstance(p, (list, tuple)):
+            out.append(tuple(_key(v) for v in p))
+        else:
+            out.append(p)
+    return tuple(out)
+
+
+# ---- kernels ------------------------------------------------------------------------------------
+
+def _seta(values):
+    from ..seta import TwoLevelSeta
+    return TwoLevelSeta(**{k: values[k] for k in SETA_FIELDS})
+
+
+def _grid(study: Study, point: Point, output: str, res: float) -> np.ndarray:
+    spec = study.outputs[output].options.get("grid") or DEFAULT_GRIDS[output]
+    gkey = study.outputs[output].options.get("grid_key", "Ft")
+    return eval_grid(spec, study.env(point), f"{study.key}.outputs.{output}.{gkey}", res)
+
+
+class _Executor:
+    def __init__(self, scene: Scene, cache: Cache, progress: Progress, threads: int):
+        self.scene, self.cache, self.progress, self.threads = scene, cache, progress, threads
+        self.data: Dict[str, List[Dict[str, Any]]] = {s.name: [dict() for _ in s.points] for s in scene.studies}
+
+    def cached(self, key, fn):
+        if key in self.cache:
+            self.cache.hits += 1
+            return self.cache[key]
+        self.cache.misses += 1
+        val = fn()
+        self.cache[key] = val
+        return val
+
+    def run(self, step: Step) -> None:
+        st = self.scene.study(step.study)
+        getattr(self, "k_" + step.kernel)(st, step)
+
+    # two-level seta and single fiber ----------------------------------------------------------
+    def k_critical_line(self, st: Study, step: Step) -> None:
+        res = self.scene.resolution
+        m = st.model.name
+        if m == "two_level_seta":
+            from ..seta import critical_line_batch
+            groups: Dict[tuple, List[Point]] = {}
+            grids: Dict[tuple, np.ndarray] = {}
+            for i in step.points:
+                p = st.points[i]
+                g = _grid(st, p, "critical_line", res)
+                groups.setdefault(_key(g), []).append(p)
+                grids[_key(g)] = g
+            for gk, pts in groups.items():
+                g = grids[gk]
+                todo = list({_design(p): p for p in pts if ("line", _design(p), gk) not in self.cache}.values())
+                self.cache.hits += len(pts) - len(todo)
+                if todo:
+                    designs = np.array([[p.values[f] for f in SETA_FIELDS] for p in todo])
+                    self.cache.misses += len(todo)
+                    line = critical_line_batch(designs, g, threads=self.threads, errors="nan")
+                    for j, p in enumerate(todo):
+                        self.cache[("line", _design(p), gk)] = {
+                            "Ft": g, "Fn": line.Fn[j].copy(), "status": line.status[j].copy(),
+                            "theta_joint": line.theta_joint[j].copy()}
+                for p in pts:
+                    self.data[st.name][p.index]["critical_line"] = self.cache[("line", _design(p), gk)]
+                    self.progress.advance(1, st.name)
+        elif m == "single_fiber":
+            from ..seta import SingleFiber
+            for i in step.points:
+                p = st.points[i]
+                g = _grid(st, p, "critical_line", res)
+
+                def fn():
+                    f = SingleFiber(**{k: p.values[k] for k in ("EI", "EA", "l", "alpha", "w")})
+                    line = f.critical_line(g, errors="nan")
+                    return {"Ft": g, "Fn": line.Fn, "status": line.status}
+                self.data[st.name][i]["critical_line"] = self.cached(("fiber_line", _design(p), _key(g)), fn)
+                self.progress.advance(1, st.name)
+        else:  # kendall, rivlin: closed forms
+            from ..seta import kendall_fn, rivlin_fn
+            for i in step.points:
+                p = st.points[i]
+                g = _grid(st, p, "critical_line", res)
+                if m == "kendall":
+                    Fn = kendall_fn(g, p.values["EA"], p.values["w"], errors="nan")
+                else:
+                    Fn = rivlin_fn(g, p.values["w"], errors="nan")
+                Fn = np.atleast_1d(np.asarray(Fn, dtype=np.float64))
+                self.data[st.name][i]["critical_line"] = {"Ft": g, "Fn": Fn,
+                                                          "status": np.where(np.isfinite(Fn), 0, 5)}
+                self.progress.advance(1, st.name)
+
+    def k_fn0_from_line(self, st: Study, step: Step) -> None:
+        for i in step.points:
+            line = self.data[st.name][i]["critical_line"]
+            self.data[st.name][i].setdefault("characteristics", {})["fn0"] = float(line["Fn"][0])
+
+    def k_fn0(self, st: Study, step: Step) -> None:
+        if st.model.name == "single_fiber":
+            from ..seta import SingleFiber
+            for i in step.points:
+                p = st.points[i]
+
+                def fn():
+                    f = SingleFiber(**{k: p.values[k] for k in ("EI", "EA", "l", "alpha", "w")})
+                    return float(f.critical_line(np.zeros(1), errors="nan").Fn[0])
+                self.data[st.name][i].setdefault("characteristics", {})["fn0"] = self.cached(("fiber_fn0", _design(p)), fn)
+                self.progress.advance(1, st.name)
+            return
+        from ..seta import critical_line_batch
+        pts = [st.points[i] for i in step.points]
+        todo = list({_design(p): p for p in pts if ("fn0", _design(p)) not in self.cache}.values())
+        self.cache.hits += len(pts) - len(todo)
+        if todo:
+            designs = np.array([[p.values[f] for f in SETA_FIELDS] for p in todo])
+            line = critical_line_batch(designs, np.zeros(1), threads=self.threads, errors="nan")
+            self.cache.misses += len(todo)
+            for j, p in enumerate(todo):
+                self.cache[("fn0", _design(p))] = float(line.Fn[j, 0])
+        for p in pts:
+            self.data[st.name][p.index].setdefault("characteristics", {})["fn0"] = self.cache[("fn0", _design(p))]
+            self.progress.advance(1, st.name)
+
+    def k_characteristics(self, st: Study, step: Step) -> None:
+        if st.model.name in ("kendall", "rivlin"):
+            for i in step.points:
+                p = st.points[i]
+                self.data[st.name][i].setdefault("characteristics", {}).update(
+                    self.cached(("peel_chars", st.model.name, _design(p)), lambda: _peel_characteristics(st.model.name, p.values)))
+                self.progress.advance(1, st.name)
+            return
+        for i in step.points:
+            p = st.points[i]
+
+            def fn():
+                c = _seta(p.values).characteristics()
+                k = c.slope_k
+                return {"fn0": c.fn0, "slope_k": k, "abs_slope_k": abs(k),
+                        "inv_abs_k": 1.0 / abs(k) if k != 0 else math.inf,
+                        "max_pull_off": c.max_pull_off, "ft_at_max_pull_off": c.ft_at_min_fn,
+                        "min_fn": c.min_fn, "ft_max": c.ft_max, "sticky_at_rest": bool(c.sticky_at_rest),
+                        "ft_at_line_end": c.ft_at_line_end, "fn_at_line_end": c.fn_at_line_end,
+                        "line_end": c.end, "folds": list(c.folds)}
+            self.data[st.name][i].setdefault("characteristics", {}).update(self.cached(("chars", _design(p)), fn))
+            self.progress.advance(1, st.name)
+
+    def k_small_deformation(self, st: Study, step: Step) -> None:
+        res = self.scene.resolution
+        for i in step.points:
+            p = st.points[i]
+            d = self.cached(("small", _design(p)), lambda: _seta(p.values).small_deformation())
+            k = d["slope_k"]
+            small = {"small_fn0": d["fn0"], "small_slope_k": k, "small_abs_slope_k": abs(k),
+                     "small_inv_abs_k": 1.0 / abs(k) if k != 0 else math.inf,
+                     "small_contact_length": d["contact_length"], "small_non_sticky": bool(d["non_sticky"])}
+            self.data[st.name][i].setdefault("characteristics", {}).update(small)
+            if "linear_line" in st.outputs:
+                g = _grid(st, p, "linear_line", res)
+                self.data[st.name][i]["linear_line"] = {"Ft": g, "Fn": d["fn0"] + k * g}
+            self.progress.advance(1, st.name)
+
+    def k_shapes(self, st: Study, step: Step) -> None:
+        opts = st.outputs["shapes"].options
+        steps = opts["points"] - 1
+        for i in step.points:
+            p = st.points[i]
+            g = eval_grid(opts["grid"], st.env(p), f"{st.key}.outputs.shapes.Ft", 1.0)
+
+            def fn():
+                seta = _seta(p.values)
+                shapes = [seta.shape(float(ft), steps) for ft in g]
+                return {"Ft": g, "Fn": np.array([float(d["Fn"]) for d in shapes]),
+                        "x": [np.asarray(d["x"]) for d in shapes], "z": [np.asarray(d["z"]) for d in shapes],
+                        "closing_error": np.array([float(d["closing_error"]) for d in shapes]),
+                        "status": np.array([int(d["status"]) for d in shapes])}
+            self.data[st.name][i]["shapes"] = self.cached(("shapes", _design(p), _key(g), steps), fn)
+            self.progress.advance(1, st.name)
+
+    def k_sensitivities(self, st: Study, step: Step) -> None:
+        from ..seta import TwoLevelSeta
+        if not hasattr(TwoLevelSeta, "sensitivities"):  # an older build of gecko
+            raise SceneError("sensitivities need gecko.TwoLevelSeta.sensitivities, which this build of gecko "
+                             "does not have", key=f"{st.key}.outputs.sensitivities")
+        opts = st.outputs["sensitivities"].options
+        for i in step.points:
+            p = st.points[i]
+            g = _grid(st, p, "sensitivities", self.scene.resolution)
+
+            def fn():
+                r = _seta(p.values).sensitivities(g)
+                dFn = np.asarray(r["dFn"]).reshape(g.size, len(SETA_FIELDS))
+                names = list(r.get("parameters", SETA_FIELDS))
+                return {"Ft": g, "dFn": {f: dFn[:, names.index(f)] for f in SETA_FIELDS},
+                        "status": np.asarray(r["status"])}
+            d = self.cached(("sens", _design(p), _key(g)), fn)
+            self.data[st.name][i]["sensitivities"] = {"Ft": d["Ft"], "dFn": {k: d["dFn"][k] for k in opts["wrt"]}}
+            self.progress.advance(1, st.name)
+
+    # frictional adhesion --------------------------------------------------------------------------
+    def k_force_trace(self, st: Study, step: Step) -> None:
+        from ..friction import force_trace
+        sps = st.outputs["force_trace"].options["samples_per_segment"]
+        sps = max(1, int(round(sps * self.scene.resolution)))
+        for i in step.points:
+            p = st.points[i]
+            tr = force_trace(np.array(p.values["K"]), p.values["path"], samples_per_segment=sps)
+            self.data[st.name][i]["force_trace"] = tr
+            self.progress.advance(1, st.name)
+
+    def k_forces(self, st: Study, step: Step) -> None:
+        from ..friction import EyringDetachment, SlidingModel, ViscoelasticDetachment, steady_sliding
+        for i in step.points:
+            p = st.points[i]
+            v = p.values
+            law = (ViscoelasticDetachment(v["G0"], v["V_star"], v["n"]) if v["law"] == "viscoelastic"
+                   else EyringDetachment(v["G0"], v["V_star"]))
+            model = SlidingModel(N=v["N"], K=v["K"], f_par1=v["f_par1"], f_perp1=v["f_perp1"], law=law)
+            V = _grid(st, p, "forces", self.scene.resolution)
+            r = steady_sliding(V, model, t_off=v["t_off"])
+            self.data[st.name][i]["forces"] = {"V": V, "F_par": np.atleast_1d(r.F_par),
+                                               "F_perp": np.atleast_1d(r.F_perp)}
+            self.progress.advance(1, st.name)
+
+
+def _design(p: Point) -> tuple:
+    """The design alone (model parameters, not the study's free variables): the cache key."""
+    key = p.__dict__.get("_design_key")
+    if key is None:
+        key = p.__dict__["_design_key"] = _key({k: v for k, v in p.values.items() if k in p.params})
+    return key
+
+
+def _peel_characteristics(model: str, v: Dict[str, float]) -> Dict[str, float]:
+    from ..seta import kendall_fn, rivlin_fn
+    w = v["w"]
+    if model == "rivlin":
+        return {"fn0": float(rivlin_fn(0.0, w))}
+    EA = v["EA"]
+    ft_max = math.sqrt(2 * EA * w)
+    out = {"fn0": float(kendall_fn(0.0, EA, w)), "ft_max": ft_max}
+    if not math.isfinite(ft_max):
+        out.update(max_pull_off=math.inf, ft_at_max_pull_off=math.inf)
+        return out
+    # Fn(Ft) is smooth and unimodal on [0, ft_max]: bracket on a grid, then golden section.
+    g = np.linspace(0.0, ft_max, 257)
+    fn = np.asarray(kendall_fn(g, EA, w))
+    j = int(np.argmin(fn))
+    a, b = g[max(j - 1, 0)], g[min(j + 1, g.size - 1)]
+    r = (math.sqrt(5) - 1) / 2
+    c, d = b - r * (b - a), a + r * (b - a)
+    fc, fd = float(kendall_fn(c, EA, w)), float(kendall_fn(d, EA, w))
+    for _ in range(100):
+        if b - a <= 1e-14 * max(1.0, abs(b)):
+            break
+        if fc < fd:
+            b, d, fd = d, c, fc
+            c = b - r * (b - a)
+            fc = float(kendall_fn(c, EA, w))
+        else:
+            a, c, fc = c, d, fd
+            d = a + r * (b - a)
+            fd = float(kendall_fn(d, EA, w))
+    ft = 0.5 * (a + b)
+    out.update(max_pull_off=-float(kendall_fn(ft, EA, w)), ft_at_max_pull_off=ft)
+    return out
+
+
+# ---- curves of each plot -------------------------------------------------------------------------
+
+_TEX = {"EI1": "EI_1", "EI2": "EI_2", "EA1": "EA_1", "EA2": "EA_2", "l1": "l_1", "l2": "l_2",
+        "alpha1": "\\alpha_1", "alpha2": "\\alpha_2", "w": "w"}
+_ROLE = {"two_level_seta": "seta", "single_fiber": "fiber", "kendall": "kendall", "rivlin": "rivlin"}
+
+
+def plot_curves(scene: Scene, plot, data) -> List[Curve]:
+    """The data behind one plot, as curves (no matplotlib needed)."""
+    curves: List[Curve] = []
+    studies = [scene.study(n) for n in plot.studies]
+    # name the model in a legend only when two studies sweep (their labels alone could clash)
+    many = sum(bool(s.swept_names) for s in studies) > 1
+    for st in studies:
+        rows = data[st.name]
+        w_of = lambda p: float(p.values.get("w", 1.0))  # noqa: E731
+        if plot.kind == "critical_line":
+            for p in st.points:
+                d = rows[p.index]
+                if "critical_line" in d:
+                    c = d["critical_line"]
+                    curves.append(Curve(st.name, st.label_for(p, many), np.asarray(c["Fn"]) / w_of(p),
+                                        np.asarray(c["Ft"]) / w_of(p), "Fn_bar", "Ft_bar",
+                                        _ROLE.get(st.model.name, "line"),
+                                        meta={"status": np.asarray(c["status"]), "values": p.values}))
+                if "linear_line" in d:
+                    c = d["linear_line"]
+                    curves.append(Curve(st.name, st.label_for(p, many) + " (small deformation, eq 18)"
+                                        if st.swept_names else "small deformation (eq 18)",
+                                        np.asarray(c["Fn"]) / w_of(p), np.asarray(c["Ft"]) / w_of(p),
+                                        "Fn_bar", "Ft_bar", "linear", meta={"values": p.values}))
+        elif plot.kind == "characteristic":
+            others = [n for n in st.swept_names if n != plot.x]
+            groups: Dict[tuple, List[Point]] = {}
+            for p in st.points:
+                groups.setdefault(tuple(_key(p.swept[n]) for n in others), []).append(p)
+            for pts in groups.values():
+                pts = sorted(pts, key=lambda p: p.swept[plot.x])
+                x = np.array([float(p.swept[plot.x]) for p in pts])
+                for yname in plot.y:
+                    y = np.array([float(rows[p.index]["characteristics"][yname]) for p in pts])
+                    lab = CHARACTERISTIC_LABELS.get(yname, yname)
+                    if others:
+                        from .schema import _fmt, _symbol
+                        lab += ", " + ", ".join(f"{_symbol(st.model, n)} = {_fmt(n, pts[0].swept[n])}" for n in others)
+                    if len(studies) > 1:
+                        lab = f"{st.name}: {lab}"
+                    curves.append(Curve(st.name, lab, x, y, plot.x, yname,
+                                        "small" if yname.startswith("small_") else "exact"))
+        elif plot.kind == "shapes":
+            for p in st.points:
+                s = rows[p.index]["shapes"]
+                for j, ft in enumerate(s["Ft"]):
+                    base = st.label_for(p, many) if st.swept_names else ""
+                    lab = (base + ", " if base else "") + f"$\\bar F_t$ = {ft / w_of(p):.3g}"
+                    curves.append(Curve(st.name, lab, s["x"][j], s["z"][j], "x", "z", "shape",
+                                        meta={"Ft": float(ft), "Fn": float(s["Fn"][j]),
+                                              "closing_error": float(s["closing_error"][j]),
+                                              "status": int(s["status"][j])}))
+        elif plot.kind == "sensitivities":
+            for p in st.points:
+                s = rows[p.index]["sensitivities"]
+                base = st.label_for(p, many) + ": " if st.swept_names else ""
+                for name, arr in s["dFn"].items():
+                    sym = _TEX.get(name, name)
+                    curves.append(Curve(st.name, f"{base}$\\partial F_n/\\partial {sym}$", np.asarray(s["Ft"]), np.asarray(arr),
+                                        "Ft", f"dFn_d{name}", "sensitivity"))
+        elif plot.kind in ("force_trace", "force_space"):
+            for p in st.points:
+                tr = rows[p.index]["force_trace"]
+                base = st.label_for(p, many) if (st.swept_names or st.label) else ""
+                pre = base + ": " if base else ""
+                if plot.kind == "force_trace":
+                    curves.append(Curve(st.name, pre + "$f_\\parallel$", tr.t, tr.f_par, "t", "f", "f_par"))
+                    curves.append(Curve(st.name, pre + "$f_\\perp$", tr.t, tr.f_perp, "t", "f", "f_perp"))
+                else:
+                    curves.append(Curve(st.name, base or st.model.title, tr.f_par, tr.f_perp, "F_par", "F_perp",
+                                        "force_space", meta={"t": tr.t}))
+        elif plot.kind == "steady_sliding":
+            for p in st.points:
+                f = rows[p.index]["forces"]
+                base = st.label_for(p, many)
+                curves.append(Curve(st.name, base, f["V"], f["F_par"], "V", "F_par", "F_par", panel=0))
+                curves.append(Curve(st.name, base, f["V"], f["F_perp"], "V", "F_perp", "F_perp", panel=1))
+    return curves
+
+
+def curves_csv(curves: Sequence[Curve]) -> str:
+    """Every curve of a plot in one tidy table: study, curve, label, x, y (named columns)."""
+    buf = io.StringIO()
+    wr = csv.writer(buf, lineterminator="\n")
+    xname = curves[0].xname if curves else "x"
+    yname = curves[0].yname if curves else "y"
+    same = all(c.xname == xname and c.yname == yname for c in curves)
+    head = ["study", "curve", "label", "panel"] + ([xname, yname] if same else ["x_name", "x", "y_name", "y"])
+    wr.writerow(head)
+    for i, c in enumerate(curves):
+        for xv, yv in zip(np.asarray(c.x).ravel(), np.asarray(c.y).ravel()):
+            row = [c.study, i, c.label, c.panel]
+            row += [repr(float(xv)), repr(float(yv))] if same else [c.xname, repr(float(xv)), c.yname, repr(float(yv))]
+            wr.writerow(row)
+    return buf.getvalue()
+
+
+def study_csv(study: Study, rows: List[Dict[str, Any]]) -> Dict[str, str]:
+    """The ``csv = true`` output: each computed output of a study as a table (file name -> text)."""
+    out: Dict[str, str] = {}
+    swept = study.swept_names
+    chars = [r.get("characteristics") for r in rows]
+    if any(chars):
+        names = [n for n in study.model.characteristics if any(c and n in c for c in chars)]
+        buf = io.StringIO()
+        wr = csv.writer(buf, lineterminator="\n")
+        wr.writerow(["design"] + swept + names)
+        for p, c in zip(study.points, chars):
+            wr.writerow([p.index] + [p.swept[n] for n in swept] + [("" if c is None else c.get(n, "")) for n in names])
+        out[f"{study.name}.characteristics.csv"] = buf.getvalue()
+    for output, cols in (("critical_line", ("Ft", "Fn", "status")), ("linear_line", ("Ft", "Fn")),
+                         ("forces", ("V", "F_par", "F_perp"))):
+        if any(output in r for r in rows):
+            buf = io.StringIO()
+            wr = csv.writer(buf, lineterminator="\n")
+            wr.writerow(["design"] + swept + list(cols))
+            for p, r in zip(study.points, rows):
+                if output in r:
+                    d = r[output]
+                    for vals in zip(*(np.asarray(d[c]) for c in cols)):
+                        wr.writerow([p.index] + [p.swept[n] for n in swept] + [repr(v.item()) for v in vals])
+            out[f"{study.name}.{output}.csv"] = buf.getvalue()
+    if any("force_trace" in r for r in rows):
+        buf = io.StringIO()
+        wr = csv.writer(buf, lineterminator="\n")
+        wr.writerow(["design"] + swept + ["t", "d_par", "d_perp", "f_par", "f_perp"])
+        for p, r in zip(study.points, rows):
+            tr = r["force_trace"]
+            for vals in zip(tr.t, tr.d_par, tr.d_perp, tr.f_par, tr.f_perp):
+                wr.writerow([p.index] + [p.swept[n] for n in swept] + [repr(float(v)) for v in vals])
+        out[f"{study.name}.force_trace.csv"] = buf.getvalue()
+    return out
+
+
+# ---- the run ------------------------------------------------------------------------------------
+
+def run_scene(scene, out: Optional[os.PathLike] = None, *, formats: Optional[Sequence[str]] = None,
+              resolution: Optional[float] = None, progress: Optional[bool] = None, cache: Optional[Cache] = None,
+              threads: Optional[int] = None, draw: bool = True, stream=None) -> RunResult:
+    """Validate, plan, compute and (with ``out``) write a scene.
+
+    ``scene``: a TOML path, a dict or a :class:`Scene`. ``formats`` adds figure formats (e.g.
+    ``["svg"]``) to every plot's own. ``progress``: None shows a bar only on a terminal.
+    ``draw=False`` (or no ``out``) never imports matplotlib. Returns a :class:`RunResult` whose
+    ``curves`` hold the data behind every plot.
+    """
+    t0 = time.perf_counter()
+    sc = load_scene(scene, resolution=resolution)
+    plan = plan_scene(sc)
+    cache = cache if cache is not None else Cache()
+    threads = threads or min(4, os.cpu_count() or 1)
+    total = sum(s.size for s in plan.steps) + (len(sc.plots) if out is not None and draw else 0)
+    bar = Progress(total, Path(sc.source).stem if sc.source != "<dict>" else "scene", stream=stream,
+                   enabled=progress if progress is not None else None)
+    ex = _Executor(sc, cache, bar, threads)
+    try:
+        for step in plan.steps:
+            try:
+                ex.run(step)
+            except SceneError as err:
+                raise err.at(source=sc.source) from None
+            except ValueError as exc:  # a kernel refused a design: name the study
+                raise SceneError(str(exc), key=sc.study(step.study).key, source=sc.source) from None
+        curves = {p.name: plot_curves(sc, p, ex.data) for p in sc.plots}
+        result = RunResult(sc, plan, ex.data, curves)
+        if out is not None:
+            result.files = _write(sc, result, Path(out), formats or (), draw, bar)
+    finally:
+        bar.close()
+    result.seconds = time.perf_counter() - t0
+    return result
+
+
+def _write(sc: Scene, result: RunResult, out: Path, extra_formats, draw: bool, bar: Progress) -> List[Path]:
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise SceneError(f"cannot create the output folder {str(out)!r}: {exc.strerror or exc}", source=sc.source) from None
+    staging = Path(tempfile.mkdtemp(prefix=".gecko-staging-", dir=out))
+    try:
+        names: List[str] = []
+        for p in sc.plots:
+            (staging / f"{p.name}.csv").write_text(curves_csv(result.curves[p.name]), encoding="utf-8")
+            names.append(f"{p.name}.csv")
+        for st in sc.studies:
+            if "csv" in st.outputs:
+                for fname, text in study_csv(st, result.data[st.name]).items():
+                    if sc.source != "<dict>":  # unique across scenes written to one folder
+                        fname = f"{Path(sc.source).stem}.{fname}"
+                    (staging / fname).write_text(text, encoding="utf-8")
+                    names.append(fname)
+        if draw and sc.plots:
+            from .render import render_plot
+            for p in sc.plots:
+                fmts = list(dict.fromkeys(list(p.formats) + list(extra_formats)))
+                for f in render_plot(sc, p, result.curves[p.name], staging, fmts):
+                    names.append(f)
+                bar.advance(1, p.name)
+        final = []
+        for n in names:  # every file is complete: move them into place
+            os.replace(staging / n, out / n)
+            final.append(out / n)
+        return final
+    finally:
+        shutil.rmtree(staging, ignore_errors=True)
