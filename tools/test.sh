@@ -17,8 +17,9 @@ ctest --test-dir build/ci-release --output-on-failure -j "$jobs"
 
 echo "== C++ tests under ASan + UBSan"
 san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
-cmake -S . -B build/ci-asan -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGECKO_INSTALL=OFF \
-      -DCMAKE_CXX_FLAGS="$warn $san" -DCMAKE_EXE_LINKER_FLAGS="$san" >/dev/null
+# -O1 -g1: sanitizer builds compile twice as fast as -O2 -g and still report file:line.
+cmake -S . -B build/ci-asan -G Ninja -DCMAKE_BUILD_TYPE= -DGECKO_INSTALL=OFF \
+      -DCMAKE_CXX_FLAGS="-O1 -g1 $warn $san" -DCMAKE_EXE_LINKER_FLAGS="$san" >/dev/null
 cmake --build build/ci-asan -j "$jobs"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir build/ci-asan --output-on-failure -j "$jobs"
