@@ -11,39 +11,14 @@ from __future__ import annotations
 
 from typing import NamedTuple
 
-import numpy as np
-
 from . import _core
+from ._vectorize import error_code as _error_code, flat_args as _flat_args, shaped as _shaped
+from ._vectorize import vectorised as _vectorised
 
 __all__ = [
     "ellint_f", "ellint_e", "ellint_k", "ellint_ek", "EK",
     "carlson_rf", "carlson_rd", "carlson_rj", "carlson_rc",
 ]
-
-_ERRORS = {"raise": 0, "nan": 1}
-
-
-def _error_code(errors: str) -> int:
-    try:
-        return _ERRORS[errors]
-    except (KeyError, TypeError):
-        raise ValueError(f"errors = {errors!r} is not allowed: need 'raise' or 'nan'") from None
-
-
-def _flat_args(args):
-    arrays = np.broadcast_arrays(*(np.asarray(a, dtype=np.float64) for a in args))
-    shape = arrays[0].shape
-    return shape, [np.ascontiguousarray(a).reshape(-1) for a in arrays]
-
-
-def _shaped(out, shape):
-    return float(out[0]) if shape == () else out.reshape(shape)
-
-
-def _vectorised(kernel, *args, errors):
-    code = _error_code(errors)
-    shape, flat = _flat_args(args)
-    return _shaped(kernel(*flat, code), shape)
 
 
 def ellint_f(phi, m, *, errors: str = "raise"):

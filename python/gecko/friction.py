@@ -29,6 +29,7 @@ from typing import Callable, NamedTuple, Optional
 import numpy as np
 
 from . import _core
+from ._vectorize import error_code as _error_code, flat_args as _flat_args, shaped as _shaped
 
 __all__ = [
     # beam
@@ -44,26 +45,6 @@ __all__ = [
     # beyond the paper
     "simulate_spatulae", "SpatulaSimulation", "fit_steady_sliding", "SteadySlidingFit",
 ]
-
-_ERRORS = {"raise": 0, "nan": 1}
-
-
-def _error_code(errors: str) -> int:
-    try:
-        return _ERRORS[errors]
-    except (KeyError, TypeError):
-        raise ValueError(f"errors = {errors!r} is not allowed: need 'raise' or 'nan'") from None
-
-
-def _flat_args(args):
-    arrays = np.broadcast_arrays(*(np.asarray(a, dtype=np.float64) for a in args))
-    shape = arrays[0].shape
-    return shape, [np.ascontiguousarray(a).reshape(-1) for a in arrays]
-
-
-def _shaped(out, shape):
-    return float(out[0]) if shape == () else out.reshape(shape)
-
 
 def _matrix(K, name: str = "K") -> np.ndarray:
     K = np.asarray(K, dtype=np.float64)

@@ -25,6 +25,7 @@ from typing import Optional
 import numpy as np
 
 from . import _core
+from ._vectorize import error_code as _error_code, vectorised as _vectorised
 
 __all__ = [
     "TwoLevelSeta", "SingleFiber", "CriticalLine", "SetaCharacteristics", "kendall_fn", "rivlin_fn",
@@ -49,16 +50,6 @@ _LINE_END = {
     5: "point budget exhausted",
     6: "natural state not found",
 }
-
-_ERRORS = {"raise": 0, "nan": 1}
-
-
-def _error_code(errors: str) -> int:
-    try:
-        return _ERRORS[errors]
-    except (KeyError, TypeError):
-        raise ValueError(f"errors = {errors!r} is not allowed: need 'raise' or 'nan'") from None
-
 
 def _flat(x):
     a = np.asarray(x, dtype=np.float64)
@@ -281,15 +272,6 @@ def critical_line_batch(designs, Ft, *, threads: int = 1, errors: str = "raise",
                         theta_rate_base=shaped(d["theta_rate_base"]),
                         turning_points_beam=shaped(d["turning_points_beam"]),
                         turning_points_spatula=shaped(d["turning_points_spatula"]))
-
-
-def _vectorised(kernel, *args, errors):
-    code = _error_code(errors)
-    arrays = np.broadcast_arrays(*(np.asarray(a, dtype=np.float64) for a in args))
-    shape = arrays[0].shape
-    flat = [np.ascontiguousarray(a).reshape(-1) for a in arrays]
-    out = kernel(*flat, code)
-    return float(out[0]) if shape == () else out.reshape(shape)
 
 
 def kendall_fn(Ft, EA, w, *, errors: str = "raise"):

@@ -1,5 +1,6 @@
 // Tests for gecko/elliptic/carlson_rf.hpp: mpmath table (double, long double, float),
 // identities (DLMF 19.20.1, 19.18.1), domain errors, NaN/inf handling, precision policy.
+#include <gecko/elliptic/carlson_rd.hpp>
 #include <gecko/elliptic/carlson_rf.hpp>
 
 #include <cmath>
@@ -147,4 +148,16 @@ TEST_CASE("carlson_rf: precision policy trades error for fewer steps, error stay
   // ... and a lower precision does have a visible effect (the policy is not ignored). Below
   // about 20 bits the threshold is capped (carlson_tolerance.hpp), so 10 and 12 bits coincide.
   CHECK(e24 > std::ldexp(1.0L, -40));
+}
+
+// Regression (seta stress campaign): the unchecked kernels are called from hot loops without
+// argument checks; two zero arguments used to keep the duplication test true forever. They must
+// now stop (bounded by detail::carlson_max_steps) and answer with a non-finite value.
+TEST_CASE("carlson unchecked kernels terminate on two zero arguments", "[carlson_rf][regression]") {
+  using gecko::policies::default_policy;
+  CHECK_FALSE(std::isfinite(gecko::detail::carlson_rf_imp<double, default_policy>(0.0, 0.2, 0.0)));
+  CHECK_FALSE(std::isfinite(gecko::detail::carlson_rf_roots_imp<double, default_policy>(0.0, 0.2, 0.0, 0.0, std::sqrt(0.2), 0.0)));
+  CHECK_FALSE(std::isfinite(gecko::detail::carlson_rd_imp<double, default_policy>(0.0, 0.0, 0.2)));
+  CHECK_FALSE(std::isfinite(gecko::detail::carlson_rf_imp<float, default_policy>(0.0f, 0.2f, 0.0f)));
+  CHECK_FALSE(std::isfinite(gecko::detail::carlson_rf_imp<long double, default_policy>(0.0L, 0.2L, 0.0L)));
 }

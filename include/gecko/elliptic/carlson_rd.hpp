@@ -67,7 +67,7 @@ inline T carlson_rd_imp(T x, T y, T z) {
   const T D = max_of(max_of(fabs(dx), fabs(dy)), fabs(dz));
   T f = 1;  // 4^-n
   T sum = 0;
-  while (f * D >= tol * A) {
+  for (int step = 0; step < carlson_max_steps<T> && f * D >= tol * A; ++step) {
     const T sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
     const T lambda = sx * (sy + sz) + sy * sz;
     // The division is off the critical path of the loop (nothing in the next step needs it).

@@ -81,7 +81,7 @@ inline T carlson_rf_imp(T x, T y, T z) {
   // tol so that huge arguments cannot overflow the test.
   const T D = max_of(max_of(fabs(dx), fabs(dy)), fabs(dz));
   T f = 1;  // 4^-n
-  while (f * D >= tol * A) {
+  for (int step = 0; step < carlson_max_steps<T> && f * D >= tol * A; ++step) {
     const T sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
     const T lambda = sx * (sy + sz) + sy * sz;
     x = (x + lambda) * T(0.25);
@@ -112,13 +112,13 @@ inline T carlson_rf_roots_imp(T x, T y, T z, T sx, T sy, T sz) {
   T f = 1;
   if (D >= tol * A) {
     T lambda = sx * (sy + sz) + sy * sz;
-    for (;;) {
+    for (int step = 1;; ++step) {
       x = (x + lambda) * T(0.25);
       y = (y + lambda) * T(0.25);
       z = (z + lambda) * T(0.25);
       A = (A + lambda) * T(0.25);
       f *= T(0.25);
-      if (!(f * D >= tol * A)) break;
+      if (!(f * D >= tol * A) || step >= carlson_max_steps<T>) break;
       const T rx = sqrt(x), ry = sqrt(y), rz = sqrt(z);
       lambda = rx * (ry + rz) + ry * rz;
     }

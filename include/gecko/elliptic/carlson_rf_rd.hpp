@@ -37,7 +37,7 @@ inline carlson_rf_rd_result<T> carlson_rf_rd_imp(T x, T y, T z) {
   const T DD = max_of(max_of(fabs(dx), fabs(dy)), fabs(dz));
   T f = 1;
   T sum = 0;
-  while (f * DD >= tol_d * AD || f * DF >= tol_f * AF) {
+  for (int step = 0; step < carlson_max_steps<T> && (f * DD >= tol_d * AD || f * DF >= tol_f * AF); ++step) {
     const T sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
     const T lambda = sx * (sy + sz) + sy * sz;
     sum += f / (sz * (z + lambda));

@@ -60,7 +60,7 @@ inline T carlson_rj_duplication(T x, T y, T z, T p) {
   const T D = max_of(max_of(fabs(dx), fabs(dy)), max_of(fabs(dz), fabs(dp)));
   T f = 1;  // 4^-n
   T sum = 0;
-  while (f * D >= tol * A) {
+  for (int step = 0; step < carlson_max_steps<T> && f * D >= tol * A; ++step) {
     const T sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
     const T lambda = sx * (sy + sz) + sy * sz;
     // R_C(alpha, beta) = R_C(t^2, p) / (p + lambda), t = alpha^(1/2) / (p + lambda) (degree -1/2

@@ -85,5 +85,15 @@ struct carlson_tolerance {
   static constexpr T rj = static_cast<T>(constexpr_cbrt(constexpr_sqrt(r / 4)));
 };
 
+// Upper bound on duplication steps. For valid arguments the tolerance test ends the loop long
+// before: at the latest when 4^-n underflows to zero while the means stay positive. Only invalid
+// arguments given to an unchecked kernel (two of them zero) keep the test true forever -- every
+// mean then shrinks like 4^-n, exactly as the test's left side -- so the unchecked kernels stop
+// here and return a non-finite value instead of hanging (found by the seta stress campaign).
+template <class T>
+constexpr int carlson_max_steps =
+    (std::numeric_limits<T>::max_exponent - std::numeric_limits<T>::min_exponent +
+     std::numeric_limits<T>::digits) / 2 + 4;
+
 }  // namespace detail
 }  // namespace gecko

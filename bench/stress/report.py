@@ -1,0 +1,149 @@
+#!/usr/bin/env python3
+"""Verify a saved campaign (bench/stress/campaign.py --out X.npz) with bench/stress/verify.py,
+check the batch call for 1 vs 2 threads, and write bench/results/stress.{md,json}.
+
+    python3 bench/stress/report.py bench/stress/stress_2000.npz
+"""
+import json
+import os
+import sys
+import time
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import campaign  # noqa: E402
+
+RESULTS = os.path.join(HERE, "..", "results")
+
+
+def threads_check(P, n=300):
+    import gecko
+    ft = np.array([-1.0, -0.3, 0.0, 0.5, 1.0, 1.9])   # shared grid; beyond (Ft)max -> status 5
+    sub = P[:n]
+    t = time.time()
+    a = gecko.critical_line_batch(sub, ft, threads=1, errors="nan")
+    t1 = time.time() - t
+    t = time.time()
+    b = gecko.critical_line_batch(sub, ft, threads=2, errors="nan")
+    t2 = time.time() - t
+    same = all(getattr(a, k).tobytes() == getattr(b, k).tobytes()
+               for k in ("Fn", "theta_joint", "status", "iterations", "turning_points_beam", "turning_points_spatula"))
+    return dict(designs=int(sub.shape[0]), ft=ft.tolist(), bitwise_identical=bool(same), t1_s=t1, t2_s=t2)
+
+
+def main(path):
+    z = np.load(path)
+    P, FT, Fn, beta, status, secs = z["P"], z["FT"], z["Fn"], z["beta"], z["status"], z["secs"]
+    t = time.time()
+    if "v_dFn" in z.files and "--reverify" not in sys.argv:
+        # reuse the campaign's verification; re-verify (with the rounding-amplification bound of
+        # verify.py) only the states that the saved one flags or that lack the bound
+        v = {k[2:]: z[k].copy() for k in z.files if k.startswith("v_")}
+        t_ver = float(z["t_ver"])
+        scale = np.maximum(1.0, np.abs(Fn))
+        flag = (status == 0) & ~((np.abs(v["dFn"]) / scale <= 1e-9) & (np.abs(v["dbeta"]) <= 1e-9))
+        v.setdefault("beta_uncert", np.where(status == 0, 0.0, np.nan))
+        if flag.any():
+            r, c = np.nonzero(flag)
+            st = np.full(status.shape, 1, dtype=status.dtype)
+            st[r, c] = 0
+            v2 = campaign.verify_states(P, FT, Fn, beta, st)
+            for k in v:
+                if k in v2:
+                    v[k][r, c] = v2[k][r, c]
+        t_ver += time.time() - t
+    else:
+        v = campaign.verify_states(P, FT, Fn, beta, status)
+        t_ver = time.time() - t
+    cl = campaign.classify(P, FT, Fn, beta, status, v)
+    ok = status == 0
+    scale = np.maximum(1.0, np.abs(Fn))
+    vals, cnts = np.unique(status, return_counts=True)
+    hist = {int(k): int(c) for k, c in zip(vals, cnts)}
+    conc = ok & ~cl["inconclusive_fn"]
+    rel = cl["rel"]
+    tp = ok & ((z["tpb"] > 0) | (z["tps"] > 0))
+    worst = []
+    order = np.argsort(np.where(conc, rel, -1).ravel())[::-1][:10]
+    for k in order:
+        i, j = np.unravel_index(k, status.shape)
+        worst.append(dict(design=P[i].tolist(), Ft=float(FT[i, j]), Fn=float(Fn[i, j]), beta=float(beta[i, j]),
+                          rel_dFn=float(rel[i, j]), dbeta=float(v["dbeta"][i, j]),
+                          fn_uncert=float(v["fn_uncert"][i, j] / scale[i, j])))
+    timeouts = [P[i].tolist() for i in np.nonzero((status == -1).any(axis=1))[0]]
+    wrong_idx = np.nonzero(cl["wrong_fn"] | cl["wrong_beta"] | cl["nonfinite_ok"] | cl["number_with_status"])
+    wrong = [dict(design=P[i].tolist(), Ft=float(FT[i, j]), Fn=float(Fn[i, j]), beta=float(beta[i, j]),
+                  status=int(status[i, j]), Fn_verifier=float(v["fn_root"][i, j]) if "fn_root" in v else None,
+                  rel_dFn=float(rel[i, j]), dbeta=float(v["dbeta"][i, j]))
+             for i, j in zip(*wrong_idx)]
+    tpagree = ok & conc & (v["turns_beam"] >= 0)
+    out = dict(
+        designs=int(P.shape[0]), states=int(status.size), histogram=hist,
+        solved_percent=float(100 * ok.mean()), verified_conclusive=int(conc.sum()),
+        inconclusive_fn=int(cl["inconclusive_fn"].sum()), inconclusive_beta=int(cl["inconclusive_beta"].sum()),
+        silently_wrong_fn=int(cl["wrong_fn"].sum()), silently_wrong_beta=int(cl["wrong_beta"].sum()),
+        nonfinite_with_status0=int(cl["nonfinite_ok"].sum()), number_with_status_nonzero=int(cl["number_with_status"].sum()),
+        turning_point_share=float(tp.sum() / max(1, ok.sum())),
+        turning_point_count_agreement=float(np.mean((v["turns_beam"] == z["tpb"])[tpagree] & (v["turns_spatula"] == z["tps"])[tpagree])),
+        max_rel_dFn_conclusive=float(np.nanmax(rel[conc])) if conc.any() else None,
+        median_rel_dFn=float(np.nanmedian(rel[conc])) if conc.any() else None,
+        max_verifier_fn_uncert=float(np.nanmax((v["fn_uncert"] / scale)[conc])) if conc.any() else None,
+        max_abs_dbeta_conclusive=float(np.nanmax(np.abs(v["dbeta"])[ok & ~cl["inconclusive_beta"] & conc])),
+        timeouts_designs=len(timeouts), timeout_examples=timeouts[:5],
+        gecko_seconds=float(z["t_gecko"]), verifier_seconds=t_ver, slowest_design_s=float(secs.max()),
+        worst=worst, wrong=wrong[:50], threads=threads_check(P),
+    )
+    with open(os.path.join(RESULTS, "stress.json"), "w") as f:
+        json.dump(out, f, indent=1)
+    print(json.dumps({k: v for k, v in out.items() if k not in ("worst", "wrong", "timeout_examples")}, indent=1))
+    write_md(out, path)
+    return out
+
+
+def write_md(o, path):
+    names = {-1: "timeout (no answer within the per-design limit)", 0: "converged", 1: "not converged",
+             2: "no critical state", 3: "unsupported state", 4: "singular (at a fold)", 5: "invalid input"}
+    L = ["# Stress campaign of the two-level seta solver (issue 6)", "",
+         "Generated by `bench/stress/report.py` from `bench/stress/campaign.py` (box, sampling and the",
+         "definition of *silently wrong* are in the campaign's docstring and bench/stress/README.md).", "",
+         f"- designs: {o['designs']}, states (design x Ft): {o['states']}",
+         f"- solved (status 0): {o['solved_percent']:.2f} %",
+         f"- **silently wrong** (status 0, verifier conclusive, |dFn| > 1e-8 max(1,|Fn|)): **{o['silently_wrong_fn']}**;"
+         f" beta off by > 1e-8: **{o['silently_wrong_beta']}**",
+         f"- status 0 with NaN: {o['nonfinite_with_status0']}; status != 0 with a number: {o['number_with_status_nonzero']}",
+         f"- verified conclusively: {o['verified_conclusive']} states; verifier inconclusive in Fn (own uncertainty"
+         f" > 1e-9 relative): {o['inconclusive_fn']}; in beta: {o['inconclusive_beta']}",
+         f"- max |dFn|/max(1,|Fn|) over conclusive states: {o['max_rel_dFn_conclusive']:.3g} (median {o['median_rel_dFn']:.3g});"
+         f" max verifier uncertainty there: {o['max_verifier_fn_uncert']:.3g}; max |dbeta|: {o['max_abs_dbeta_conclusive']:.3g}",
+         f"- turning-point share among solved states: {100 * o['turning_point_share']:.1f} %; turning-point counts"
+         f" agree with the verifier's sign changes of theta' in {100 * o['turning_point_count_agreement']:.2f} % of them",
+         f"- designs with a timeout: {o['timeouts_designs']} (solver bug: unbounded run time, see below)",
+         f"- time: gecko {o['gecko_seconds']:.0f} s (per-design calls in a worker process, incl. timeouts),"
+         f" verifier {o['verifier_seconds']:.0f} s; slowest design {o['slowest_design_s']:.2f} s", "",
+         "## Status histogram", "", "| status | meaning | states |", "|---|---|---|"]
+    for k, c in sorted(o["histogram"].items()):
+        L.append(f"| {k} | {names.get(k, '?')} | {c} |")
+    t = o["threads"]
+    L += ["", "## 1 vs 2 threads (batch call)", "",
+          f"`critical_line_batch` on the first {t['designs']} designs at Ft = {t['ft']}: bitwise identical"
+          f" (Fn, theta_joint, status, iterations, turning points): **{t['bitwise_identical']}**"
+          f" ({t['t1_s']:.2f} s with 1 thread, {t['t2_s']:.2f} s with 2, shared busy machine).", "",
+          "## Worst verified cases (conclusive)", "", "| design (EI1, EI2, EA1, EA2, l1, l2, a1, a2, w) | Ft | Fn | rel dFn | dbeta | verifier unc. |",
+          "|---|---|---|---|---|---|"]
+    for w in o["worst"]:
+        L.append(f"| {', '.join(f'{x:.6g}' for x in w['design'])} | {w['Ft']:.6g} | {w['Fn']:.8g} | {w['rel_dFn']:.2e} |"
+                 f" {w['dbeta']:.2e} | {w['fn_uncert']:.1e} |")
+    if o["wrong"]:
+        L += ["", "## Silently wrong / inconsistent states", "", "```", json.dumps(o["wrong"][:20], indent=1), "```"]
+    L += ["", "## Timeouts (examples)", ""] + [f"- {d}" for d in o["timeout_examples"]]
+    L += ["", "## Command", "", "```",
+          "python3 bench/stress/campaign.py --designs N --timeout 2 --out bench/stress/stress_N.npz",
+          f"python3 bench/stress/report.py {os.path.relpath(path, os.path.join(HERE, '..', '..'))}", "```"]
+    with open(os.path.join(RESULTS, "stress.md"), "w") as f:
+        f.write("\n".join(L) + "\n")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1])

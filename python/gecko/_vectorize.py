@@ -1,0 +1,35 @@
+"""Shared plumbing of the numpy-facing wrappers: the ``errors=`` keyword and ufunc-like
+broadcasting. The compiled kernels take flat contiguous float64 arrays of equal length (and run
+without the GIL); these helpers broadcast, flatten, and give the caller's shape back."""
+from __future__ import annotations
+
+import numpy as np
+
+_ERRORS = {"raise": 0, "nan": 1}
+
+
+def error_code(errors: str) -> int:
+    """The compiled modules' code for ``errors=``: "raise" -> 0 (ValueError), "nan" -> 1."""
+    try:
+        return _ERRORS[errors]
+    except (KeyError, TypeError):
+        raise ValueError(f"errors = {errors!r} is not allowed: need 'raise' or 'nan'") from None
+
+
+def flat_args(args):
+    """Broadcasts the arguments against each other; returns (shape, [flat contiguous arrays])."""
+    arrays = np.broadcast_arrays(*(np.asarray(a, dtype=np.float64) for a in args))
+    shape = arrays[0].shape
+    return shape, [np.ascontiguousarray(a).reshape(-1) for a in arrays]
+
+
+def shaped(out, shape):
+    """A flat result in the caller's shape; a Python float for all-scalar input."""
+    return float(out[0]) if shape == () else out.reshape(shape)
+
+
+def vectorised(kernel, *args, errors):
+    """Calls ``kernel(*flat_arrays, code)`` like a numpy ufunc over the broadcast arguments."""
+    code = error_code(errors)
+    shape, flat = flat_args(args)
+    return shaped(kernel(*flat, code), shape)
