@@ -6,7 +6,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 apt_packages=(g++ cmake ninja-build python3 python3-venv python3-dev
-              libeigen3-dev catch2 libgsl-dev libboost-dev libbenchmark-dev)
+              libeigen3-dev catch2 libgsl-dev libboost-dev libbenchmark-dev
+              clang libclang-rt-14-dev)   # clang + libFuzzer: tools/fuzz.sh
 missing=()
 for p in "${apt_packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -23,7 +24,8 @@ if [ ! -x .venv/bin/python ]; then
   "$python" -m venv .venv
 fi
 .venv/bin/python -m pip install -q --upgrade pip
-.venv/bin/python -m pip install -q numpy scipy mpmath pytest matplotlib
+.venv/bin/python -m pip install -q numpy scipy mpmath pytest matplotlib \
+    pandas pyarrow "dask[distributed]" atheris   # sweeps (gecko[sweep]) and the scene-parser fuzzer
 # The package itself, built in an isolated environment exactly as a user's `pip install .`
 # (scikit-build-core + pybind11 + cmeel-eigen come from PyPI as build requirements).
 .venv/bin/python -m pip install -q .

@@ -11,33 +11,15 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
-#include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
-#include "bench_config.hpp"
+#include "bench_config.hpp"  // defines GECKO_TEST_DATA_DIR for the reader below
+#include "beam_reference.hpp"
 #include "gecko/beam.hpp"
 #include "harness.hpp"
 
 namespace {
-
-std::map<std::string, long double> load_reference() {
-  std::map<std::string, long double> t;
-  std::ifstream in(std::string(GECKO_TEST_DATA_DIR) + "/beam_reference.csv");
-  std::string line;
-  std::getline(in, line);
-  while (std::getline(in, line)) {
-    std::stringstream ss(line);
-    std::string a, b, c;
-    std::getline(ss, a, ',');
-    std::getline(ss, b, ',');
-    std::getline(ss, c, ',');
-    t[a + "." + b] = std::stold(c);
-  }
-  return t;
-}
 
 double max_rel(const Eigen::Matrix2d& M, long double r11, long double r12, long double r22) {
   auto rel = [](double a, long double b) { return double(std::fabs((a - b) / b)); };
@@ -76,7 +58,8 @@ int main(int argc, char** argv) {
     if (!std::strcmp(argv[i], "--reps")) reps = std::atoi(argv[i + 1]);
   }
   gsl_set_error_handler_off();
-  const auto ref = load_reference();
+  // The same reader as the tests (tests/beam/beam_reference.hpp): one parser of the mpmath table.
+  const auto& ref = gecko_test::beam_reference();
   const long double K11 = ref.at("parabola_closed_form.K11_unit"),
                     K12 = ref.at("parabola_closed_form.K12_unit"),
                     K22 = ref.at("parabola_closed_form.K22_unit");
