@@ -4,7 +4,7 @@
 // on its scalar, and evaluated with dual<T, K> to get its exact first derivatives with respect to
 // K chosen inputs (the Newton unknowns and Ft; or the design parameters for sensitivities). This is
 // analytic differentiation, not finite differences: every operation carries the chain rule, and
-// R_F carries its partial derivatives -R_D/6 (DLMF 19.18.1, gecko/seta/detail/rf_gradient.hpp).
+// R_F carries its partial derivatives -R_D/6 (DLMF 19.18.1, gecko/elliptic/carlson_rf_gradient.hpp).
 // Only the few operations the Carlson forms need are provided.
 #pragma once
 
