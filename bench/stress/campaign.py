@@ -3,8 +3,13 @@
 box, every returned critical state verified by an independent ODE shooting route
 (bench/stress/verify.py, no gecko code), statuses histogrammed, worst cases kept.
 
-    python3 bench/stress/campaign.py --designs 10000 --seed 20261121 \
-        --out bench/results/stress.json --md bench/results/stress.md
+    python3 bench/stress/campaign.py --designs 10000 --workers 2 --out bench/stress/stress_10000.npz
+    python3 bench/stress/report.py bench/stress/stress_10000.npz
+
+The designs are split into chunks (--chunk designs each); each chunk (gecko, then the verifier) runs
+in its own process, --workers at once, and is saved to <out>_chunks/chunk_NNNNN.npz as soon as it
+is done. Re-running the same command resumes: finished chunks are kept, the rest are run, then all
+are merged into <out>. The designs depend only on --seed and --designs, never on the chunking.
 
 Box (non-dimensional, w = 1, l1 = 1): EI1/(w l1^2) log-uniform 0.1..200, EI2/EI1 log-uniform
 1e-3..1e3, l2/l1 log-uniform 1e-3..1, alpha1 uniform 0.01..pi/2-0.01, alpha2 uniform
@@ -172,45 +177,107 @@ def classify(P, FT, Fn, beta, status, v):
                 inconclusive_beta=ok & ~conclusive_beta)
 
 
+def run_chunk(P, FT, timeout):
+    """gecko (watchdog per design) + verification of one chunk of designs; a dict of arrays."""
+    t = time.time()
+    Fn, beta, status, tpb, tps, secs = run_gecko(P, FT, timeout, progress=False)
+    t_gecko = time.time() - t
+    t = time.time()
+    v = verify_states(P, FT, Fn, beta, status)
+    t_ver = time.time() - t
+    return dict(P=P, FT=FT, Fn=Fn, beta=beta, status=status, tpb=tpb, tps=tps, secs=secs,
+                t_gecko=np.float64(t_gecko), t_ver=np.float64(t_ver), **{"v_" + k: x for k, x in v.items()})
+
+
+def chunk_path(outdir, k):
+    return os.path.join(outdir, f"chunk_{k:05d}.npz")
+
+
+def merge_chunks(outdir, nchunks, chunk, partial=False):
+    """Concatenate the chunk files (in order) into one campaign dict; None if one is missing,
+    unless partial (then the finished ones, with their design indices in 'design_index')."""
+    parts = []
+    index = []
+    for k in range(nchunks):
+        f = chunk_path(outdir, k)
+        if not os.path.exists(f):
+            if partial:
+                continue
+            return None
+        parts.append(np.load(f))
+        index.append(np.arange(k * chunk, k * chunk + parts[-1]["P"].shape[0]))
+    if not parts:
+        return None
+    out = {"design_index": np.concatenate(index)}
+    for key in parts[0].files:
+        if key in ("t_gecko", "t_ver"):
+            out[key] = np.float64(sum(float(z[key]) for z in parts))
+        else:
+            out[key] = np.concatenate([z[key] for z in parts])
+    return out
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--designs", type=int, default=10000)
     ap.add_argument("--seed", type=int, default=20261121)
-    ap.add_argument("--timeout", type=float, default=5.0, help="wall-clock limit per design (s)")
-    ap.add_argument("--out", default=None)
+    ap.add_argument("--timeout", type=float, default=10.0, help="wall-clock limit per design (s)")
+    ap.add_argument("--out", required=True, help="merged campaign file (.npz)")
+    ap.add_argument("--workers", type=int, default=2, help="chunks run at once (separate processes)")
+    ap.add_argument("--chunk", type=int, default=250, help="designs per chunk")
+    ap.add_argument("--merge-only", action="store_true",
+                    help="merge the chunks finished so far into --out (a partial campaign) and stop")
+    ap.add_argument("--run-chunk", type=int, default=None, help=argparse.SUPPRESS)
     args = ap.parse_args(argv)
     rng = np.random.default_rng(args.seed)
     P = sample_designs(args.designs, rng)
     FT = sample_ft(P, rng)
-    t = time.time()
-    Fn, beta, status, tpb, tps, secs = run_gecko(P, FT, args.timeout)
-    t_gecko = time.time() - t
-    print(f"gecko: {t_gecko:.1f} s", flush=True)
-    if args.out:   # keep gecko's answers even if the verification is interrupted
-        np.savez_compressed(args.out.replace(".npz", "_gecko.npz"), P=P, FT=FT, Fn=Fn, beta=beta,
-                            status=status, tpb=tpb, tps=tps, secs=secs, t_gecko=t_gecko)
-    t = time.time()
-    v = verify_states(P, FT, Fn, beta, status)
-    t_ver = time.time() - t
-    print(f"verifier: {t_ver:.1f} s", flush=True)
-    cl = classify(P, FT, Fn, beta, status, v)
-    res = dict(P=P, FT=FT, Fn=Fn, beta=beta, status=status, tpb=tpb, tps=tps, secs=secs, t_gecko=t_gecko,
-               t_ver=t_ver, v=v, cl=cl, args=vars(args))
-    if args.out:
-        np.savez_compressed(args.out, P=P, FT=FT, Fn=Fn, beta=beta, status=status, tpb=tpb, tps=tps,
-                            secs=secs, **{"v_" + k: x for k, x in v.items()}, t_gecko=t_gecko, t_ver=t_ver)
+    outdir = args.out[:-4] + "_chunks" if args.out.endswith(".npz") else args.out + "_chunks"
+    os.makedirs(outdir, exist_ok=True)
+    nchunks = (args.designs + args.chunk - 1) // args.chunk
+    if args.run_chunk is not None:   # a worker: one chunk, written atomically
+        k = args.run_chunk
+        sl = slice(k * args.chunk, min(args.designs, (k + 1) * args.chunk))
+        res = run_chunk(P[sl], FT[sl], args.timeout)
+        tmp = chunk_path(outdir, k)[:-4] + ".tmp.npz"
+        np.savez_compressed(tmp, **res)
+        os.replace(tmp, chunk_path(outdir, k))
+        return None
+    if args.merge_only:
+        res = merge_chunks(outdir, nchunks, args.chunk, partial=True)
+        np.savez_compressed(args.out, **res)
+        print(f"merged {res['P'].shape[0]} designs (of {args.designs}) into {args.out}", flush=True)
+        return res
+    # Driver: every missing chunk in a worker process (resumable: finished chunks are kept).
+    import subprocess
+    todo = [k for k in range(nchunks) if not os.path.exists(chunk_path(outdir, k))]
+    print(f"{nchunks} chunks of {args.chunk} designs, {len(todo)} to run, {args.workers} workers -> {outdir}",
+          flush=True)
+    base = [sys.executable, os.path.abspath(__file__), "--designs", str(args.designs), "--seed", str(args.seed),
+            "--timeout", str(args.timeout), "--out", args.out, "--chunk", str(args.chunk)]
+    running = {}
+    t0 = time.time()
+    done = 0
+    failed = []
+    while todo or running:
+        while todo and len(running) < args.workers:
+            k = todo.pop(0)
+            running[k] = subprocess.Popen(base + ["--run-chunk", str(k)])
+        time.sleep(0.5)
+        for k, pr in list(running.items()):
+            if pr.poll() is not None:
+                del running[k]
+                done += 1
+                if pr.returncode != 0:
+                    failed.append(k)
+                print(f"  chunk {k} rc {pr.returncode} ({done} done, {time.time() - t0:.0f} s)", flush=True)
+    if failed:
+        raise SystemExit(f"chunks failed: {failed} (re-run the same command to retry them)")
+    res = merge_chunks(outdir, nchunks, args.chunk)
+    np.savez_compressed(args.out, **res)
+    print(f"merged {nchunks} chunks into {args.out} ({time.time() - t0:.0f} s)", flush=True)
     return res
 
 
 if __name__ == "__main__":
-    res = main()
-    st, cl = res["status"], res["cl"]
-    vals, cnts = np.unique(st, return_counts=True)
-    print("status histogram:", dict(zip(vals.tolist(), cnts.tolist())))
-    print("solved %:", 100 * (st == 0).mean())
-    print("wrong Fn:", int(cl["wrong_fn"].sum()), "wrong beta:", int(cl["wrong_beta"].sum()),
-          "nonfinite ok:", int(cl["nonfinite_ok"].sum()), "number with status:", int(cl["number_with_status"].sum()))
-    ok = st == 0
-    print("max rel dFn:", np.nanmax(cl["rel"][ok]) if ok.any() else None)
-    print("max fn_uncert:", np.nanmax(res["v"]["fn_uncert"][ok] / np.maximum(1, np.abs(res["Fn"][ok]))))
-    print("slowest designs (s):", np.sort(res["secs"])[-5:])
+    main()

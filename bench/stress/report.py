@@ -2,7 +2,10 @@
 """Verify a saved campaign (bench/stress/campaign.py --out X.npz) with bench/stress/verify.py,
 check the batch call for 1 vs 2 threads, and write bench/results/stress.{md,json}.
 
-    python3 bench/stress/report.py bench/stress/stress_2000.npz
+    python3 bench/stress/report.py bench/stress/stress_10000.npz [--beta bench/results/stress_beta.json]
+
+--beta: the 60-digit check of the states whose beta the double verifier cannot confirm
+(bench/stress/beta_conditioning.py --json ...), summarised in the report.
 """
 import json
 import os
@@ -18,10 +21,10 @@ import campaign  # noqa: E402
 RESULTS = os.path.join(HERE, "..", "results")
 
 
-def threads_check(P, n=300):
+def threads_check(P, n=None):
     import gecko
     ft = np.array([-1.0, -0.3, 0.0, 0.5, 1.0, 1.9])   # shared grid; beyond (Ft)max -> status 5
-    sub = P[:n]
+    sub = P[:n] if n else P
     t = time.time()
     a = gecko.critical_line_batch(sub, ft, threads=1, errors="nan")
     t1 = time.time() - t
@@ -33,11 +36,15 @@ def threads_check(P, n=300):
     return dict(designs=int(sub.shape[0]), ft=ft.tolist(), bitwise_identical=bool(same), t1_s=t1, t2_s=t2)
 
 
-def main(path):
+def main(path, beta_json=None):
     z = np.load(path)
     P, FT, Fn, beta, status, secs = z["P"], z["FT"], z["Fn"], z["beta"], z["status"], z["secs"]
     t = time.time()
-    if "v_dFn" in z.files and "--reverify" not in sys.argv:
+    if "v_beta_uncert" in z.files and "--reverify" not in sys.argv:
+        # verified by the current verify.py in the campaign itself (chunked runs)
+        v = {k[2:]: z[k].copy() for k in z.files if k.startswith("v_")}
+        t_ver = float(z["t_ver"])
+    elif "v_dFn" in z.files and "--reverify" not in sys.argv:
         # reuse the campaign's verification; re-verify (with the rounding-amplification bound of
         # verify.py) only the states that the saved one flags or that lack the bound
         v = {k[2:]: z[k].copy() for k in z.files if k.startswith("v_")}
@@ -80,7 +87,7 @@ def main(path):
              for i, j in zip(*wrong_idx)]
     tpagree = ok & conc & (v["turns_beam"] >= 0)
     out = dict(
-        designs=int(P.shape[0]), states=int(status.size), histogram=hist,
+        designs=int(P.shape[0]), designs_planned=int(designs_planned(path, z)), states=int(status.size), histogram=hist,
         solved_percent=float(100 * ok.mean()), verified_conclusive=int(conc.sum()),
         inconclusive_fn=int(cl["inconclusive_fn"].sum()), inconclusive_beta=int(cl["inconclusive_beta"].sum()),
         silently_wrong_fn=int(cl["wrong_fn"].sum()), silently_wrong_beta=int(cl["wrong_beta"].sum()),
@@ -94,21 +101,49 @@ def main(path):
         timeouts_designs=len(timeouts), timeout_examples=timeouts[:5],
         gecko_seconds=float(z["t_gecko"]), verifier_seconds=t_ver, slowest_design_s=float(secs.max()),
         worst=worst, wrong=wrong[:50], threads=threads_check(P),
+        design_seconds_percentiles={str(q): float(np.percentile(secs, q)) for q in (50, 90, 99, 99.9, 100)},
+        worst_dbeta=worst_dbeta(P, FT, Fn, beta, status, v, cl, scale),
+        beta_high_precision=json.load(open(beta_json)) if beta_json else None,
     )
     with open(os.path.join(RESULTS, "stress.json"), "w") as f:
         json.dump(out, f, indent=1)
-    print(json.dumps({k: v for k, v in out.items() if k not in ("worst", "wrong", "timeout_examples")}, indent=1))
+    print(json.dumps({k: v for k, v in out.items() if k not in ("worst", "wrong", "timeout_examples", "worst_dbeta", "beta_high_precision")}, indent=1))
     write_md(out, path)
+    return out
+
+
+def designs_planned(path, z):
+    """The campaign's --designs (a partial merge holds fewer): from the chunk directory's size."""
+    if "design_index" not in z.files:
+        return z["P"].shape[0]
+    return int(os.environ.get("STRESS_DESIGNS_PLANNED", z["design_index"].max() + 1))
+
+
+def worst_dbeta(P, FT, Fn, beta, status, v, cl, scale, k=5):
+    """The largest |dbeta| among states conclusive in Fn (beta may be inconclusive there)."""
+    conc = (status == 0) & ~cl["inconclusive_fn"]
+    db = np.where(conc, np.abs(v["dbeta"]), -1)
+    out = []
+    for idx in np.argsort(db.ravel())[::-1][:k]:
+        i, j = np.unravel_index(idx, status.shape)
+        if db[i, j] <= 0:
+            break
+        out.append(dict(design=P[i].tolist(), Ft=float(FT[i, j]), Fn=float(Fn[i, j]), beta=float(beta[i, j]),
+                        rel_dFn=float(cl["rel"][i, j]), dbeta=float(v["dbeta"][i, j]),
+                        beta_uncert=float(v["beta_uncert"][i, j]), fn_uncert=float(v["fn_uncert"][i, j] / scale[i, j]),
+                        conclusive_beta=bool(not cl["inconclusive_beta"][i, j])))
     return out
 
 
 def write_md(o, path):
     names = {-1: "timeout (no answer within the per-design limit)", 0: "converged", 1: "not converged",
-             2: "no critical state", 3: "unsupported state", 4: "singular (at a fold)", 5: "invalid input"}
+             2: "no critical state", 3: "unsupported state", 4: "singular (at a fold)", 5: "invalid input",
+             6: "not reached (the followed line was given up before this Ft)"}
     L = ["# Stress campaign of the two-level seta solver (issue 6)", "",
          "Generated by `bench/stress/report.py` from `bench/stress/campaign.py` (box, sampling and the",
          "definition of *silently wrong* are in the campaign's docstring and bench/stress/README.md).", "",
-         f"- designs: {o['designs']}, states (design x Ft): {o['states']}",
+         f"- designs: {o['designs']}" + (f" (a partial campaign: {o['designs']} of {o['designs_planned']} planned designs finished)"
+                                         if o['designs'] < o['designs_planned'] else "") + f", states (design x Ft): {o['states']}",
          f"- solved (status 0): {o['solved_percent']:.2f} %",
          f"- **silently wrong** (status 0, verifier conclusive, |dFn| > 1e-8 max(1,|Fn|)): **{o['silently_wrong_fn']}**;"
          f" beta off by > 1e-8: **{o['silently_wrong_beta']}**",
@@ -119,7 +154,8 @@ def write_md(o, path):
          f" max verifier uncertainty there: {o['max_verifier_fn_uncert']:.3g}; max |dbeta|: {o['max_abs_dbeta_conclusive']:.3g}",
          f"- turning-point share among solved states: {100 * o['turning_point_share']:.1f} %; turning-point counts"
          f" agree with the verifier's sign changes of theta' in {100 * o['turning_point_count_agreement']:.2f} % of them",
-         f"- designs with a timeout: {o['timeouts_designs']} (solver bug: unbounded run time, see below)",
+         f"- designs with a timeout (no answer within the per-design wall-clock limit): {o['timeouts_designs']}"
+         + (" (a finding: unbounded run time, see below)" if o['timeouts_designs'] else ""),
          f"- time: gecko {o['gecko_seconds']:.0f} s (per-design calls in a worker process, incl. timeouts),"
          f" verifier {o['verifier_seconds']:.0f} s; slowest design {o['slowest_design_s']:.2f} s", "",
          "## Status histogram", "", "| status | meaning | states |", "|---|---|---|"]
@@ -137,13 +173,38 @@ def write_md(o, path):
                  f" {w['dbeta']:.2e} | {w['fn_uncert']:.1e} |")
     if o["wrong"]:
         L += ["", "## Silently wrong / inconsistent states", "", "```", json.dumps(o["wrong"][:20], indent=1), "```"]
-    L += ["", "## Timeouts (examples)", ""] + [f"- {d}" for d in o["timeout_examples"]]
+    L += ["", "## Largest beta differences where Fn is verified", "",
+          "The double-precision verifier reads beta off a backward shot from the contact edge over the spatula;",
+          "in strongly tensioned (hyperbolic) states that shot amplifies any error in Fn by |dbeta/dFn| (up to",
+          "~1e7 here), so beta is inconclusive there (its bound `beta unc.` below) even where Fn is conclusive.", "",
+          "| design | Ft | Fn | rel dFn | dbeta | beta unc. | beta conclusive |", "|---|---|---|---|---|---|---|"]
+    for w in o["worst_dbeta"]:
+        L.append(f"| {', '.join(f'{x:.6g}' for x in w['design'])} | {w['Ft']:.6g} | {w['Fn']:.8g} | {w['rel_dFn']:.2e} |"
+                 f" {w['dbeta']:.2e} | {w['beta_uncert']:.1e} | {w['conclusive_beta']} |")
+    if o.get("beta_high_precision"):
+        L += ["", "60-digit check (bench/stress/beta_conditioning.py: Taylor-series shooting of order 40 in mpmath,",
+              "root Fn* to 1e-30): gecko's errors against it, beside the double verifier's differences and the",
+              "condition number dbeta/dFn of the tip-to-joint shot.", "",
+              "| design | Ft | gecko rel dFn | gecko dbeta | verifier rel dFn | verifier dbeta | dbeta/dFn (tip shot) |",
+              "|---|---|---|---|---|---|---|"]
+        for r in o["beta_high_precision"]:
+            L.append(f"| {', '.join(f'{x:.6g}' for x in r['design'])} | {r['Ft']:.6g} | {r['gecko_rel_dFn']:.1e} |"
+                     f" {r['gecko_dbeta']:.1e} | {r['verifier_rel_dFn']:.1e} | {r['verifier_dbeta']:.1e} |"
+                     f" {r['dbeta_dFn_tip_shot']:.2e} |")
+    q = o["design_seconds_percentiles"]
+    L += ["", "## Run time per design (wall clock, incl. the worker round trip; shared busy machine)", "",
+          "percentiles 50/90/99/99.9/100: " + ", ".join(f"{q[k]:.3g} s" for k in q)]
+    L += ["", "## Timeouts (examples)", ""] + ([f"- {d}" for d in o["timeout_examples"]] or ["none"])
     L += ["", "## Command", "", "```",
-          "python3 bench/stress/campaign.py --designs N --timeout 2 --out bench/stress/stress_N.npz",
-          f"python3 bench/stress/report.py {os.path.relpath(path, os.path.join(HERE, '..', '..'))}", "```"]
+          "python3 bench/stress/campaign.py --designs 10000 --workers 2 --timeout 30 --out bench/stress/stress_10000.npz",
+          "# (resumable: the same command keeps the finished chunks in bench/stress/stress_10000_chunks/)",
+          f"python3 bench/stress/report.py {os.path.relpath(path, os.path.join(HERE, '..', '..'))}"
+          + (" --beta bench/results/stress_beta.json" if o.get("beta_high_precision") else ""), "```"]
     with open(os.path.join(RESULTS, "stress.md"), "w") as f:
         f.write("\n".join(L) + "\n")
 
 
 if __name__ == "__main__":
-    main(sys.argv[1])
+    args = [a for a in sys.argv[1:] if not a.startswith("--")]
+    beta = sys.argv[sys.argv.index("--beta") + 1] if "--beta" in sys.argv else None
+    main(args[0], beta)

@@ -10,8 +10,11 @@ and folds included, the GIL released)::
     line.Fn, line.theta_joint, line.status            # numpy arrays, NaN where status != 0
 
 Status codes (``line.status``): 0 converged; 1 Newton did not converge; 2 no critical state on the
-line followed from Ft = 0 (beyond a fold, |Ft| > (Ft)max); 3 state outside the model's forms;
-4 singular (Ft exactly at a fold); 5 bad input under ``errors="nan"``.
+line followed from Ft = 0 (beyond a fold, |Ft| > (Ft)max); 3 state outside the model's forms
+(also: the line left them before reaching this Ft); 4 singular (Ft exactly at a fold); 5 bad input
+under ``errors="nan"``; 6 not reached: the continuation gave up before this Ft (point budget, step
+collapse, corrector failure; ``critical_line().end`` says which), so whether a critical state
+exists there is unknown, unlike 2.
 
 Bad input raises ``ValueError`` naming the parameter and its allowed range (or, with
 ``errors="nan"``, marks the element with status 5).
@@ -39,6 +42,7 @@ STATUS = {
     3: "unsupported state",
     4: "singular (at a fold)",
     5: "invalid input",
+    6: "not reached (the followed line was given up before this Ft)",
 }
 
 _LINE_END = {
@@ -49,6 +53,7 @@ _LINE_END = {
     4: "left the model (axial load comparable to EA)",
     5: "point budget exhausted",
     6: "natural state not found",
+    7: "stalled (the step collapsed; given up)",
 }
 
 def _flat(x):

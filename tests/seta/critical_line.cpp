@@ -166,6 +166,30 @@ TEST_CASE("solve_critical from a guess and without one", "[seta][solve]") {
   CHECK(std::fabs(a.theta_joint - b.theta_joint) < 1e-13);
 }
 
+TEST_CASE("a line that ends exactly at the requested Ft is solved from its end node", "[seta][line]") {
+  // The traced line ends at the largest requested Ft; the Hermite guess used to discard that end
+  // node (its cubic rounded to the wrong sign at s = 1) and Newton restarted from the previous
+  // node, 0.18 away, outside this design's narrow basin: status 1 alone, status 0 with a larger
+  // Ft beside it (found by bench/scaling, 2 of 2e6 states).
+  gecko::TwoLevelSeta<double> s;
+  s.EI1 = 0.890109313591035;
+  s.EI2 = 0.3647603514851164;
+  s.EA2 = 91.42353211686735;
+  s.l2 = 0.04332596620695156;
+  s.alpha1 = 0.7443924728216106;
+  s.alpha2 = 0.6647447504166255;
+  const auto alone = gecko::critical_line_at(s, std::vector<double>{4.427});
+  const auto pair = gecko::critical_line_at(s, std::vector<double>{4.427, 4.5});
+  REQUIRE(alone[0].status == gecko::critical_status::converged);
+  REQUIRE(pair[0].status == gecko::critical_status::converged);
+  CHECK(std::fabs(alone[0].Fn - pair[0].Fn) <= 1e-12 * std::fabs(pair[0].Fn));
+  const long double err = seta_test::fn_error(s, alone[0].Fn, 4.427);
+  CHECK(std::fabs(static_cast<double>(err)) <= 1e-11 * std::max(1.0, std::fabs(alone[0].Fn)));
+  for (double ft : {4.45, 4.427}) {
+    CHECK(gecko::critical_line_at(s, std::vector<double>{ft})[0].status == gecko::critical_status::converged);
+  }
+}
+
 TEST_CASE("EA = 1e12 is continuous with EA = infinity", "[seta][line]") {
   gecko::TwoLevelSeta<double> a, b;
   a.EA2 = std::numeric_limits<double>::infinity();

@@ -178,6 +178,13 @@ inline void evaluate_line(const System& sys, const traced_line<System>& line, co
   // end the running range [min, max] of the parameter over the nodes so far covers it; the
   // running ranges only grow, so that segment is found by binary search.
   const auto& all = line.nodes;
+  // A target the line never reached has no critical state only where the line really ended
+  // (the requested end, (Ft)max, or back below its start after a fold); where it was given up
+  // the state is unknown, and says so.
+  critical_status beyond = critical_status::no_critical_state;
+  if (line.end == line_end::unsupported_state) beyond = critical_status::unsupported_state;
+  else if (line.end == line_end::no_convergence || line.end == line_end::max_points || line.end == line_end::stalled)
+    beyond = critical_status::not_reached;
   std::vector<T> run_lo(all.size()), run_hi(all.size());
   for (std::size_t i = 0; i < all.size(); ++i) {
     run_lo[i] = i ? std::min(run_lo[i - 1], all[i].Ft) : all[i].Ft;
@@ -198,6 +205,7 @@ inline void evaluate_line(const System& sys, const traced_line<System>& line, co
     if (nodes.size() > 1) {
       std::size_t lo = 0, hi = nodes.size() - 1;  // smallest j with target in the running range at j
       if (!(target >= run_lo[hi] && target <= run_hi[hi])) {
+        r.status = beyond;
         out[idx] = r;
         continue;
       }
@@ -211,6 +219,7 @@ inline void evaluate_line(const System& sys, const traced_line<System>& line, co
     for (std::size_t i = first; i + 1 < nodes.size() || (nodes.size() == 1 && i == 0); ++i) {
       if (nodes.size() == 1) {
         if (nodes[0].Ft == target) r = state_from(sys, nodes[0].z, Ft[idx], target, line.plans[0], critical_status::converged, 0);
+        else r.status = beyond;
         break;
       }
       const T a = nodes[i].Ft - target, b = nodes[i + 1].Ft - target;

@@ -30,7 +30,9 @@ enum class critical_status : int {
   no_critical_state = 2,  // the critical line followed from Ft = 0 does not reach this Ft
   unsupported_state = 3,  // the state leaves the model's forms (axial load comparable to EA)
   singular = 4,           // singular Jacobian: Ft at a fold of the line (use the line instead)
-  invalid_input = 5       // bad input under nan_policy
+  invalid_input = 5,      // bad input under nan_policy
+  not_reached = 6         // the line followed from Ft = 0 stopped before this Ft without ending
+                          // (point budget, step collapse, corrector failure): unknown, not "none"
 };
 
 template <class T>

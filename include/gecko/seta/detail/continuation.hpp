@@ -30,7 +30,8 @@ enum class line_end : int {
   no_convergence = 3,     // the corrector failed even with the smallest step (singular point)
   unsupported_state = 4,  // the states left the model's forms (axial load comparable to EA)
   max_points = 5,         // the point budget ran out
-  no_natural_state = 6    // the natural state at Ft = 0 was not found
+  no_natural_state = 6,   // the natural state at Ft = 0 was not found
+  stalled = 7             // the step collapsed: the line crawls (see continuation_options)
 };
 
 namespace detail {
@@ -62,6 +63,14 @@ struct continuation_options {
   T tolerance = T(1e-11);   // corrector tolerance along the line (output points are re-solved)
   T max_step = T(0.08);     // largest arclength step, as a fraction of scale
   int max_nodes = 100000;
+  // Stall test, bounding the cost where the step collapses (bench/results/stress.md: lines that
+  // run along the edge of the region where the forms exist, every other predictor outside it,
+  // took up to 10^5 nodes and several seconds for a few percent of the range). The line ends
+  // (line_end::stalled) when stall_window corrector attempts, failed ones included, advance it by
+  // less than stall_fraction x scale of arclength in (z, mu). A healthy line advances by at
+  // least 1e-3 x scale per node, so 1000 nodes cover a full scale.
+  int stall_window = 1000;
+  T stall_fraction = T(0.01);
 };
 
 template <class System>
@@ -189,7 +198,17 @@ inline traced_line<System> follow_line(const System& sys, const typename System:
   T ds = (opt.max_step < T(0.02) ? opt.max_step : T(0.02)) * opt.scale;
   int branch = 0;
   const T ft_limit = opt.ft_stop;
+  int attempts = 0;        // corrector attempts since the last stall check
+  T advanced = 0;          // arclength covered since then
   while (static_cast<int>(line.nodes.size()) < opt.max_nodes) {
+    if (++attempts > opt.stall_window) {
+      if (advanced < opt.stall_fraction * opt.scale) {
+        line.end = line_end::stalled;
+        return line;
+      }
+      attempts = 1;
+      advanced = 0;
+    }
     const auto& last = line.nodes.back();
     xvec x0;
     x0.template head<n>() = last.z;
@@ -273,6 +292,7 @@ inline traced_line<System> follow_line(const System& sys, const typename System:
       const auto fresh = sys.plan(x.template head<n>(), x[n]);
       if (System::plan_state(fresh) == segment_state::ok) p = fresh;
     }
+    advanced += (x - x0).norm();
     line.nodes.push_back({x.template head<n>(), x[n], tn, branch});
     line.plans.push_back(p);
     if (omega > line.omega) line.omega = omega;
@@ -310,6 +330,13 @@ inline bool hermite_guess(const line_node<T, N>& a, const line_node<T, N>& b, T 
   T flo = f(lo);
   if (flo == 0) {
     z = a.z;
+    return true;
+  }
+  // The end node itself: the cubic at s = 1 sums four terms and may round to the sign it has at
+  // s = 0, which would discard an exact node and restart Newton from the previous one (a narrow
+  // basin then fails: found by the scaling benchmark, 2 states in 2e6).
+  if (b.Ft == target) {
+    z = b.z;
     return true;
   }
   if ((flo < 0) == (f(hi) < 0)) return false;
