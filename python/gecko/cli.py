@@ -31,14 +31,20 @@ scenes:
   such as "pi/6", lists or {range|logrange = [a, b], num = N} sweeps, combined by "cross" or
   "zip"; outputs such as critical_line, characteristics, shapes) and [[plot]] tables (kind:
   critical_line, characteristic, shapes, sensitivities, force_trace, force_space,
-  steady_sliding). See examples/README.md for every key, and `gecko models` for the models,
-  their parameters (with the papers' defaults) and outputs.
+  steady_sliding). A [sweep] section computes characteristics of many designs (a grid, a
+  random, Sobol or Latin-hypercube sample over bounds, or a table) into one table, on local
+  threads or a Dask cluster (executor = "dask://host:8786"); an [optimize] section maximises
+  the pull-off over a box of parameters. See examples/README.md for every key, and
+  `gecko models` for the models, their parameters (with the papers' defaults) and outputs.
 
 output:
   `gecko run` writes, for each plot NAME: NAME.png (and NAME.svg with --svg) and NAME.csv with
   every plotted curve (tidy columns: study, curve, label, panel, x, y); for studies with
-  `csv = true` in their outputs also SCENE.STUDY.OUTPUT.csv (SCENE: the file's stem). Files are
-  written to a staging folder and renamed into place only when everything succeeded.
+  `csv = true` in their outputs also SCENE.STUDY.OUTPUT.csv (SCENE: the file's stem); a [sweep]
+  NAME.parquet (or NAME.csv) and NAME.png with [sweep.plot]; an [optimize] NAME.json, NAME.csv
+  (the optimum's critical line) and NAME.png. Files are written to a staging folder and renamed
+  into place only when everything succeeded; an interrupted sweep resumes from its chunks
+  (kept in DIR/.gecko-sweep-SCENE.NAME/ until the table is written).
 
 progress:
   A progress bar is shown on a terminal for work that lasts more than a second; nothing
@@ -132,8 +138,13 @@ def main(argv: Optional[List[str]] = None) -> int:
             from .scene import validate_scene
             for s in args.scenes:
                 sc = validate_scene(s)
-                print(f"{s}: ok ({len(sc.studies)} studies, {sum(len(x.points) for x in sc.studies)} designs, "
-                      f"{len(sc.plots)} plots)")
+                parts = [f"{len(sc.studies)} studies, {sum(len(x.points) for x in sc.studies)} designs, "
+                         f"{len(sc.plots)} plots"]
+                if sc.sweep is not None:
+                    parts.append(f"a sweep of {sc.sweep.size or 'a table of'} designs")
+                if sc.optimize is not None:
+                    parts.append(f"an optimize section ({sc.optimize.table['objective']})")
+                print(f"{s}: ok ({', '.join(parts)})")
             return 0
         if args.command == "plan":
             from .scene import load_scene, plan_scene
@@ -166,7 +177,8 @@ def main(argv: Optional[List[str]] = None) -> int:
         _err(str(err))
         return 2
     except KeyboardInterrupt:
-        _err("interrupted; nothing half-written was left in the output folder")
+        _err("interrupted; nothing half-written was left in the output folder (a [sweep] keeps its "
+             "finished chunks there: run the same command again to resume)")
         return 130
     return 2
 

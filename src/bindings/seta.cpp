@@ -5,7 +5,9 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include <pybind11/stl.h>
@@ -228,6 +230,117 @@ void bind_seta(py::module_& m) {
     return cols.as_dict();
   }, py::arg("designs"), py::arg("Ft"), py::arg("errors") = 0, py::arg("threads") = 1,
      py::arg("tolerance") = std::nan(""));
+
+  // Characteristics of many designs (the design sweep, python/gecko/design_sweep.py): designs is
+  // (n*9) flat; depth says how much is solved, so a sweep pays only for the outputs it asks for:
+  //   0  closed forms only: (Ft)max and the small-deformation quantities (no solver);
+  //   1  + the natural state at Ft = 0 and the exact slope there: (Fn)0, k, sticky at rest
+  //      (characteristics with ft_end = 0: no line is traced);
+  //   2  + the line followed to its end: max pull-off and its Ft, the line's end.
+  // (Fn)0 and k come from the same natural state at depth 1 and 2, so they are bitwise equal.
+  // Invalid designs get status 5 (invalid_input) and NaN, never an exception; status 1/3 when the
+  // natural state was not found / left the model. Designs are dealt round-robin to `threads`
+  // std::threads with no shared mutable state: the result does not depend on the thread count.
+  m.def("seta_characteristics_batch", [](const darray& designs, int depth, int threads) {
+    if (designs.ndim() != 1 || designs.size() % 9 != 0)
+      throw std::invalid_argument("gecko._core: designs must be a flat array of 9 numbers per design");
+    if (depth < 0 || depth > 2)
+      throw std::invalid_argument("gecko._core: depth must be 0 (closed forms), 1 (natural state) or 2 (line)");
+    const auto nd = static_cast<std::size_t>(designs.size() / 9);
+    const auto n = static_cast<py::ssize_t>(nd);
+    py::array_t<double> fn0(n), slope_k(n), min_fn(n), ft_at_min_fn(n), max_pull_off(n), ftmax(n),
+        ft_end_(n), fn_end(n), small_fn0(n), small_k(n), small_lc(n);
+    py::array_t<std::int8_t> sticky(n), small_ns(n), interior(n);
+    py::array_t<std::int32_t> status(n), end(n), folds(n);
+    struct raw_t {
+      double *fn0, *k, *min_fn, *ft_min, *pull, *ftmax, *ft_end, *fn_end, *sfn0, *sk, *slc;
+      std::int8_t *sticky, *sns, *interior;
+      std::int32_t *status, *end, *folds;
+    } r{fn0.mutable_data(), slope_k.mutable_data(), min_fn.mutable_data(), ft_at_min_fn.mutable_data(),
+        max_pull_off.mutable_data(), ftmax.mutable_data(), ft_end_.mutable_data(), fn_end.mutable_data(),
+        small_fn0.mutable_data(), small_k.mutable_data(), small_lc.mutable_data(), sticky.mutable_data(),
+        small_ns.mutable_data(), interior.mutable_data(), status.mutable_data(), end.mutable_data(),
+        folds.mutable_data()};
+    const double* p = designs.data();
+    {
+      py::gil_scoped_release release;
+      const double nan = std::nan("");
+      auto one = [&](std::size_t i) {
+        const auto s = design_from(p + 9 * i);
+        seta_characteristics<double> c;
+        std::int32_t st = 0;
+        if (!detail::check_seta<double, nan_policy>(s, "gecko.sweep")) {
+          st = static_cast<std::int32_t>(critical_status::invalid_input);
+        } else if (depth == 0) {
+          c.small = small_deformation(s, nan_policy());
+          c.ft_max = ft_max(s);
+        } else {
+          c = characteristics(s, line_options(depth == 1 ? 0.0 : nan, nan), nan_policy());
+          if (c.end == line_end::no_natural_state) st = static_cast<std::int32_t>(critical_status::not_converged);
+          else if (c.end == line_end::unsupported_state && !(c.fn0 == c.fn0))
+            st = static_cast<std::int32_t>(critical_status::unsupported_state);
+        }
+        const bool line = depth == 2 && st == 0;
+        r.fn0[i] = c.fn0;
+        r.k[i] = c.slope_k;
+        r.min_fn[i] = line ? c.min_fn : nan;
+        r.ft_min[i] = line ? c.ft_at_min_fn : nan;
+        r.pull[i] = line ? c.max_pull_off : nan;
+        r.ftmax[i] = c.ft_max;
+        r.ft_end[i] = line ? c.ft_at_line_end : nan;
+        r.fn_end[i] = line ? c.fn_at_line_end : nan;
+        const bool small_ok = st != static_cast<std::int32_t>(critical_status::invalid_input);
+        r.sfn0[i] = small_ok ? c.small.fn0 : nan;
+        r.sk[i] = small_ok ? c.small.slope_k : nan;
+        r.slc[i] = small_ok ? c.small.contact_length : nan;
+        r.sticky[i] = static_cast<std::int8_t>(depth >= 1 && st == 0 && c.sticky_at_rest);
+        r.sns[i] = static_cast<std::int8_t>(small_ok && c.small.non_sticky);
+        r.interior[i] = static_cast<std::int8_t>(line && c.min_fn_interior);
+        r.status[i] = st;
+        r.end[i] = depth == 2 ? static_cast<std::int32_t>(c.end) : -1;
+        r.folds[i] = line ? static_cast<std::int32_t>(c.folds.size()) : 0;
+      };
+      unsigned nt = threads > 0 ? static_cast<unsigned>(threads) : 1u;
+      if (nd < nt) nt = nd > 0 ? static_cast<unsigned>(nd) : 1u;
+      std::vector<std::exception_ptr> errors(nt);
+      auto work = [&](unsigned t) {
+        try {
+          for (std::size_t i = t; i < nd; i += nt) one(i);
+        } catch (...) {
+          errors[t] = std::current_exception();
+        }
+      };
+      if (nt == 1) {
+        work(0);
+      } else {
+        std::vector<std::thread> pool;
+        pool.reserve(nt);
+        for (unsigned t = 0; t < nt; ++t) pool.emplace_back(work, t);
+        for (auto& th : pool) th.join();
+      }
+      for (const auto& e : errors)
+        if (e) std::rethrow_exception(e);
+    }
+    py::dict d;
+    d["status"] = status;
+    d["fn0"] = fn0;
+    d["slope_k"] = slope_k;
+    d["sticky_at_rest"] = sticky;
+    d["min_fn"] = min_fn;
+    d["ft_at_min_fn"] = ft_at_min_fn;
+    d["min_fn_interior"] = interior;
+    d["max_pull_off"] = max_pull_off;
+    d["ft_max"] = ftmax;
+    d["ft_at_line_end"] = ft_end_;
+    d["fn_at_line_end"] = fn_end;
+    d["line_end"] = end;
+    d["folds"] = folds;
+    d["small_fn0"] = small_fn0;
+    d["small_slope_k"] = small_k;
+    d["small_contact_length"] = small_lc;
+    d["small_non_sticky"] = small_ns;
+    return d;
+  }, py::arg("designs"), py::arg("depth") = 2, py::arg("threads") = 1);
 
   // dFn/d(design) and dtheta_joint/d(design) at the line's states: (n, 9) arrays, columns in the
   // design order (EI1, EI2, EA1, EA2, l1, l2, alpha1, alpha2, w).

@@ -19,13 +19,14 @@ def test_packaged_figures_are_the_examples():
     packaged = {p.name: p.read_text(encoding="utf-8") for p in figure_scenes()}
     in_repo = {p.name: p.read_text(encoding="utf-8") for p in EXAMPLES.glob("*.toml")}
     assert packaged == in_repo, "examples/*.toml and python/gecko/scene/figures/*.toml must be identical"
-    assert len(packaged) == 13  # 9 seta-paper figures, 3 friction-paper figures, the README demo
+    assert len(packaged) == 15  # 9 seta-paper figures, 3 friction-paper figures, the README demo,
+    # a design sweep and a design optimisation
 
 
 @pytest.mark.parametrize("path", sorted(EXAMPLES.rglob("*.toml")), ids=lambda p: p.stem)
 def test_every_example_validates(path):
     sc = validate_scene(path)
-    assert sc.studies and sc.plots
+    assert (sc.studies and sc.plots) or sc.sweep is not None or sc.optimize is not None
     assert sc.source == str(path)
 
 

@@ -22,6 +22,14 @@ FUNCTIONS: Dict[str, Callable] = {
     "deg": math.radians,  # deg(30) = pi/6: angles may be written in degrees
 }
 
+#: Bounds on an expression: a scene's expressions are a few dozen characters; without bounds a
+#: long chain ("1+1+...+1") or deep nesting ("-(-(-...") made the parser or the recursive
+#: evaluator raise RecursionError / MemoryError instead of SceneError (found while writing
+#: fuzz/fuzz_scene.py, which now guards it). Powers are evaluated in floating point, so 10**10**10 is an overflow
+#: (SceneError), never a huge integer.
+MAX_EXPRESSION_CHARS = 1000
+MAX_EXPRESSION_DEPTH = 100
+
 _BINOPS = {ast.Add: lambda a, b: a + b, ast.Sub: lambda a, b: a - b, ast.Mult: lambda a, b: a * b,
            ast.Div: lambda a, b: a / b, ast.Pow: lambda a, b: a ** b}
 _UNARY = {ast.USub: lambda a: -a, ast.UAdd: lambda a: a}
@@ -44,12 +52,30 @@ def _checked(text: str):
         return None, err.reason
 
 
+def _depth(node: ast.AST) -> int:
+    """Nesting depth of an expression tree, iteratively (a recursive walk is what overflowed)."""
+    deepest = 0
+    stack = [(node, 1)]
+    while stack:
+        n, d = stack.pop()
+        deepest = max(deepest, d)
+        stack.extend((c, d + 1) for c in ast.iter_child_nodes(n))
+    return deepest
+
+
 def _check(text: str, key: str = "") -> ast.Expression:
+    if len(text) > MAX_EXPRESSION_CHARS:
+        raise SceneError(f"the expression {text[:40]!r}... is {len(text)} characters long; at most "
+                         f"{MAX_EXPRESSION_CHARS} are allowed", key=key)
     try:
         tree = ast.parse(text.strip(), mode="eval")
-    except SyntaxError:
+    except (SyntaxError, ValueError, RecursionError, MemoryError):
+        # ValueError: null bytes on older Pythons; RecursionError/MemoryError: parser limits
         raise SceneError(f"cannot read the expression {text!r}: allowed are numbers, names, "
                          "+ - * / ** ( ) and " + ", ".join(sorted(FUNCTIONS)), key=key) from None
+    if _depth(tree) > MAX_EXPRESSION_DEPTH:
+        raise SceneError(f"the expression {text!r} is nested more than {MAX_EXPRESSION_DEPTH} levels deep",
+                         key=key)
     for node in ast.walk(tree):
         ok = isinstance(node, (ast.Expression, ast.BinOp, ast.UnaryOp, ast.Name, ast.Load, ast.Call,
                                ast.operator, ast.unaryop)) or (

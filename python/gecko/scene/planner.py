@@ -45,7 +45,8 @@ class Plan:
 
     @property
     def needs_matplotlib(self) -> bool:
-        return bool(self.scene.plots)
+        sw = self.scene.sweep
+        return bool(self.scene.plots) or bool(sw is not None and sw.plot) or self.scene.optimize is not None
 
     def describe(self) -> str:
         lines = [f"scene: {self.scene.title or self.scene.source}  (resolution {self.scene.resolution:g})"]
@@ -58,7 +59,10 @@ class Plan:
         for p in self.scene.plots:
             lines.append(f"  plot {p.name!r}: {p.kind} of {', '.join(p.studies)} -> "
                          + ", ".join(f"{p.name}.{f}" for f in p.formats) + f", {p.name}.csv")
-        if not self.scene.plots:
+        for section in (self.scene.sweep, self.scene.optimize):
+            if section is not None:
+                lines.append("  " + section.describe())
+        if not self.scene.plots and not (self.scene.sweep and self.scene.sweep.plot) and not self.scene.optimize:
             lines.append("  no plots: matplotlib is not imported")
         return "\n".join(lines)
 

@@ -4,6 +4,8 @@ from __future__ import annotations
 from pathlib import Path
 from typing import List, Sequence
 
+import numpy as np
+
 from .models import CHARACTERISTIC_LABELS
 
 
@@ -112,3 +114,70 @@ def render_plot(scene, plot, curves, folder: Path, formats: Sequence[str]) -> Li
         fig.savefig(folder / name, dpi=150 if fmt == "png" else None, format=fmt)
         written.append(name)
     return written
+
+
+def _save(fig, folder: Path, name: str, formats: Sequence[str]) -> List[str]:
+    if not _has_layout():
+        fig.tight_layout()
+    written = []
+    for fmt in formats:
+        fig.savefig(folder / f"{name}.{fmt}", dpi=150 if fmt == "png" else None, format=fmt)
+        written.append(f"{name}.{fmt}")
+    return written
+
+
+def render_sweep(scene, table, folder: Path, formats: Sequence[str]) -> List[str]:
+    """[sweep.plot]: one output against another over the designs that solved (status 0),
+    coloured by a third column when asked."""
+    spec = scene.sweep
+    p = spec.plot
+    ok = table[table["status"] == 0]
+    fig = _figure((6.4, 4.8))
+    ax = fig.add_subplot(1, 1, 1)
+    kw = dict(s=6, linewidths=0)
+    if "color" in p:
+        sc = ax.scatter(ok[p["x"]], ok[p["y"]], c=ok[p["color"]].astype(float), cmap="viridis", **kw)
+        fig.colorbar(sc, ax=ax, label=CHARACTERISTIC_LABELS.get(p["color"], _SYMBOLS.get(p["color"], p["color"])))
+    else:
+        ax.scatter(ok[p["x"]], ok[p["y"]], **kw)
+    ax.set_xlabel(CHARACTERISTIC_LABELS.get(p["x"], _SYMBOLS.get(p["x"], p["x"])))
+    ax.set_ylabel(CHARACTERISTIC_LABELS.get(p["y"], _SYMBOLS.get(p["y"], p["y"])))
+    ax.set_xscale(p.get("xscale", "linear"))
+    ax.set_yscale(p.get("yscale", "linear"))
+    ax.grid(True, linewidth=0.4, alpha=0.5)
+    failed = len(table) - len(ok)
+    ax.set_title(f"{len(ok)} designs" + (f" ({failed} with status != 0 not drawn)" if failed else ""),
+                 fontsize="small")
+    if scene.title:
+        fig.suptitle(scene.title, fontsize="medium")
+    return _save(fig, folder, spec.name, formats)
+
+
+def render_optimum(scene, opt, folder: Path, formats: Sequence[str]) -> List[str]:
+    """[optimize]: the optimum's critical line (the paper's axes: Fn horizontal, Ft vertical) with
+    the reference design's line for comparison and the optimum's maximum pull-off marked."""
+    from .. import plot as gp
+    from ..seta import TwoLevelSeta
+    fig = _figure((6.4, 4.8))
+    ax = fig.add_subplot(1, 1, 1)
+    ref = TwoLevelSeta()
+    gp.seta_critical_line(ax, ref, label="reference design", color="0.6", linestyle="--")
+    if opt.seta is not None:
+        gp.seta_critical_line(ax, opt.seta, color="C0", linewidth=1.8,
+                              label=f"optimum ({opt.status}): {opt.objective} = {opt.value:.4g}")
+        c = opt.seta.characteristics()
+        if np.isfinite(c.min_fn) and c.min_fn < 0:
+            ax.plot(c.min_fn, c.ft_at_min_fn, "o", color="C3", label=f"max pull-off {c.max_pull_off:.4g}")
+    ax.set_xlabel(gp.FN_LABEL)
+    ax.set_ylabel(gp.FT_LABEL)
+    ax.axvline(0.0, color="0.6", linewidth=0.8, zorder=0)
+    ax.grid(True, linewidth=0.4, alpha=0.5)
+    ax.legend(loc="best", fontsize="small", framealpha=0.85)
+    d = opt.design
+    derived = {"EI2/EI1": lambda: d["EI2"] / d["EI1"], "l2/l1": lambda: d["l2"] / d["l1"],
+               "alpha1+alpha2": lambda: d["alpha1"] + d["alpha2"]}
+    values = [(v, d[v] if v in d else derived[v]()) for v in opt.variables if v in d or v in derived]
+    ax.set_title(f"{opt.status}: " + ", ".join(f"{k} = {v:.4g}" for k, v in values), fontsize="small")
+    if scene.title:
+        fig.suptitle(scene.title, fontsize="medium")
+    return _save(fig, folder, scene.optimize.name, formats)

@@ -52,6 +52,8 @@ class RunResult:
     curves: Dict[str, List[Curve]]          # plot name -> curves
     files: List[Path] = field(default_factory=list)
     seconds: float = 0.0
+    sweep: Any = None                       # the [sweep] table (a pandas DataFrame)
+    optimum: Any = None                     # the [optimize] result (gecko.design_optimize.SetaOptimum)
 
 
 class Progress:
@@ -538,12 +540,79 @@ def run_scene(scene, out: Optional[os.PathLike] = None, *, formats: Optional[Seq
                 raise SceneError(str(exc), key=sc.study(step.study).key, source=sc.source) from None
         curves = {p.name: plot_curves(sc, p, ex.data) for p in sc.plots}
         result = RunResult(sc, plan, ex.data, curves)
+        if sc.sweep is not None:
+            result.sweep = _run_sweep(sc, out, threads, progress)
+        if sc.optimize is not None:
+            result.optimum = _run_optimize(sc)
         if out is not None:
             result.files = _write(sc, result, Path(out), formats or (), draw, bar)
     finally:
         bar.close()
     result.seconds = time.perf_counter() - t0
     return result
+
+
+def _sweep_folder(sc: Scene, out: Path) -> Path:
+    """Where a scene's sweep keeps its chunks while it runs (so that an interrupted run resumes);
+    removed once the table is written."""
+    stem = Path(sc.source).stem if sc.source != "<dict>" else "scene"
+    return out / f".gecko-sweep-{stem}.{sc.sweep.name}"
+
+
+def _run_sweep(sc: Scene, out: Optional[os.PathLike], threads: int, progress: Optional[bool]):
+    from ..design_sweep import sweep
+    spec = sc.sweep
+    try:
+        designs = spec.design_table()
+        return sweep(designs, spec.outputs, out=None if out is None else _sweep_folder(sc, Path(out)),
+                     chunk_size=spec.chunk_size, threads=threads,
+                     executor=None if spec.executor == "threads" else spec.executor,
+                     connect_timeout=spec.connect_timeout, errors=spec.errors, progress=progress)
+    except ValueError as exc:  # a design the kernels refuse, a bad table: name the section
+        raise SceneError(str(exc), key="sweep", source=sc.source) from None
+
+
+def _run_optimize(sc: Scene):
+    from ..design_optimize import optimize_from_scene
+    try:
+        return optimize_from_scene(dict(sc.optimize.table))
+    except ValueError as exc:
+        raise SceneError(str(exc), key="optimize", source=sc.source) from None
+
+
+def _write_sections(sc: Scene, result: RunResult, staging: Path, formats: Sequence[str], draw: bool) -> List[str]:
+    """The files of [sweep] (NAME.parquet or NAME.csv, NAME.png with [sweep.plot]) and [optimize]
+    (NAME.json, NAME.csv with the optimum's critical line, NAME.png)."""
+    import json
+    names: List[str] = []
+    if sc.sweep is not None:
+        spec = sc.sweep
+        if spec.format == "parquet":
+            result.sweep.to_parquet(staging / f"{spec.name}.parquet", index=False)
+        else:
+            result.sweep.to_csv(staging / f"{spec.name}.csv", index=False, float_format="%.17g")
+        names.append(f"{spec.name}.{spec.format}")
+        if draw and spec.plot:
+            from .render import render_sweep
+            names += render_sweep(sc, result.sweep, staging, formats)
+    if sc.optimize is not None:
+        name = sc.optimize.name
+        opt = result.optimum
+        (staging / f"{name}.json").write_text(json.dumps(opt.to_dict(), indent=1, allow_nan=True) + "\n",
+                                              encoding="utf-8")
+        names.append(f"{name}.json")
+        if opt.line is not None:
+            buf = io.StringIO()
+            wr = csv.writer(buf, lineterminator="\n")
+            wr.writerow(["Ft", "Fn", "theta_joint"])
+            for row in zip(opt.line.Ft, opt.line.Fn, opt.line.theta_joint):
+                wr.writerow([repr(float(v)) for v in row])
+            (staging / f"{name}.csv").write_text(buf.getvalue(), encoding="utf-8")
+            names.append(f"{name}.csv")
+        if draw:
+            from .render import render_optimum
+            names += render_optimum(sc, opt, staging, formats)
+    return names
 
 
 def _write(sc: Scene, result: RunResult, out: Path, extra_formats, draw: bool, bar: Progress) -> List[Path]:
@@ -571,10 +640,13 @@ def _write(sc: Scene, result: RunResult, out: Path, extra_formats, draw: bool, b
                 for f in render_plot(sc, p, result.curves[p.name], staging, fmts):
                     names.append(f)
                 bar.advance(1, p.name)
+        names += _write_sections(sc, result, staging, list(dict.fromkeys(["png", *extra_formats])), draw)
         final = []
         for n in names:  # every file is complete: move them into place
             os.replace(staging / n, out / n)
             final.append(out / n)
+        if sc.sweep is not None:  # the table is in place: its chunks are no longer needed
+            shutil.rmtree(_sweep_folder(sc, out), ignore_errors=True)
         return final
     finally:
         shutil.rmtree(staging, ignore_errors=True)

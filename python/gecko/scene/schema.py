@@ -27,6 +27,7 @@ from __future__ import annotations
 import itertools
 import math
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any, Dict, List, Optional
 
 import numpy as np
@@ -37,7 +38,7 @@ from .models import (CHARACTERISTIC_LABELS, MODELS, Model, OutputSpec, Param, _c
                      check_grid, parse_output)
 from .toml import load_toml
 
-TOP_KEYS = ("title", "description", "resolution", "study", "plot")
+TOP_KEYS = ("title", "description", "resolution", "study", "plot", "sweep", "optimize")
 STUDY_KEYS = ("name", "model", "label", "combine", "parameters", "variables", "outputs")
 PLOT_KEYS = ("name", "kind", "studies", "x", "y", "xlim", "ylim", "xscale", "yscale", "title",
              "xlabel", "ylabel", "legend", "formats", "size", "arrows")
@@ -71,6 +72,12 @@ def _number(v, key: str, env: Dict[str, float], allowed=()) -> float:
     return float(v)
 
 
+# Limits on what one study may expand to (scene fuzzing: validation must stay fast and bounded).
+MAX_GRID_POINTS = 1_000_000
+MAX_STUDY_DESIGNS = 100_000
+MAX_STUDY_EVALUATIONS = 10_000_000
+
+
 def eval_grid(spec, env: Dict[str, float], key: str, resolution: float = 1.0) -> np.ndarray:
     """Numbers of a grid spec (list, range, logrange, values); ranges scale with ``resolution``."""
     check_grid(spec, key)
@@ -81,6 +88,11 @@ def eval_grid(spec, env: Dict[str, float], key: str, resolution: float = 1.0) ->
     form = "range" if "range" in spec else "logrange"
     a, b = (_number(v, f"{key}.{form}[{i}]", env) for i, v in enumerate(spec[form]))
     num = max(2, int(round(spec["num"] * resolution)))
+    # A 100-byte scene must not be able to ask for 1e9 points (found by fuzz/fuzz_scene.py): cap
+    # a grid after the resolution is applied. Larger runs belong in a [sweep] section (chunked).
+    if num > MAX_GRID_POINTS:
+        raise SceneError(f"num x resolution = {num} is out of range: need at most {MAX_GRID_POINTS} "
+                         "points per grid (use a [sweep] section for larger runs)", key=f"{key}.num")
     if not (math.isfinite(a) and math.isfinite(b)):
         raise SceneError(f"[{a}, {b}] is out of range: the bounds must be finite", key=f"{key}.{form}")
     if form == "logrange":
@@ -167,6 +179,8 @@ class Scene:
     studies: List[Study]
     plots: List[PlotSpec]
     source: str = "<dict>"
+    sweep: Optional[Any] = None       # design_sections.SweepSpec: many designs as one table
+    optimize: Optional[Any] = None    # design_sections.OptimizeSpec: a design optimisation
 
     def study(self, name: str) -> Study:
         for s in self.studies:
@@ -242,14 +256,14 @@ def load_scene(scene, *, resolution: Optional[float] = None) -> Scene:
 
 def parse_scene(data: dict, source: str = "<dict>", *, resolution: Optional[float] = None) -> Scene:
     try:
-        scene = _parse(data, resolution)
+        scene = _parse(data, resolution, None if source == "<dict>" else str(Path(source).resolve().parent))
     except SceneError as err:
         raise err.at(source=source) from None
     scene.source = source
     return scene
 
 
-def _parse(data, resolution_override) -> Scene:
+def _parse(data, resolution_override, base_dir: Optional[str] = None) -> Scene:
     if not isinstance(data, dict):
         raise SceneError(f"a scene is a table (dict); got {_tname(data)}")
     _check_keys(data, TOP_KEYS, "")
@@ -264,12 +278,21 @@ def _parse(data, resolution_override) -> Scene:
     res = float(resolution_override) if resolution_override is not None else float(res)
     if not 0 < res <= 100:
         raise SceneError(f"resolution {res!r} is out of range: need a number in (0, 100]")
+    from .design_sections import parse_optimize, parse_sweep
+    sweep = parse_sweep(data["sweep"], res, base_dir) if "sweep" in data else None
+    optimize = parse_optimize(data["optimize"], res) if "optimize" in data else None
     studies_raw = data.get("study")
-    if studies_raw is None:
-        raise SceneError("missing [[study]]: a scene needs at least one study", key="study")
+    if studies_raw is None and (sweep is not None or optimize is not None):
+        studies_raw = []
+        if data.get("plot"):
+            raise SceneError("[[plot]] tables draw studies, and this scene has no [[study]]; a sweep "
+                             "draws its own plot ([sweep.plot])", key="plot")
+    elif studies_raw is None:
+        raise SceneError("missing [[study]]: a scene needs at least one study (or a [sweep] or "
+                         "[optimize] section)", key="study")
     if isinstance(studies_raw, dict):
         studies_raw = [studies_raw]
-    if not isinstance(studies_raw, list) or not studies_raw:
+    if not isinstance(studies_raw, list) or (not studies_raw and sweep is None and optimize is None):
         raise SceneError("need one or more [[study]] tables", key="study")
     studies = []
     for i, s in enumerate(studies_raw):
@@ -289,7 +312,15 @@ def _parse(data, resolution_override) -> Scene:
         if pn.index(n) != i:
             raise SceneError(f"duplicate plot name {n!r}; plot names become file names and must differ",
                              key=f"plot[{i}].name")
-    return Scene(title, description, res, studies, plots)
+    names = {sweep.name if sweep else None, optimize.name if optimize else None} - {None}
+    for i, p in enumerate(plots):
+        if p.name in names:
+            raise SceneError(f"plot name {p.name!r} is also the name of the [sweep] or [optimize] output; "
+                             "file names must differ", key=f"plot[{i}].name")
+    if sweep is not None and optimize is not None and sweep.name == optimize.name:
+        raise SceneError(f"[sweep] and [optimize] have the same name {sweep.name!r}; file names must differ",
+                         key="optimize.name")
+    return Scene(title, description, res, studies, plots, sweep=sweep, optimize=optimize)
 
 
 def _parse_study(s, key: str, res: float) -> Study:
@@ -345,6 +376,10 @@ def _parse_study(s, key: str, res: float) -> Study:
             for p in points:
                 gkey = f"{key}.outputs.{spec.name}.{spec.options['grid_key']}"
                 g = eval_grid(spec.options["grid"], study.env(p), gkey, res)
+                if len(points) * g.size > MAX_STUDY_EVALUATIONS:
+                    raise SceneError(f"{len(points)} designs x {g.size} grid points is out of range: need at "
+                                     f"most {MAX_STUDY_EVALUATIONS} evaluations per output (use a [sweep] "
+                                     "section for larger runs)", key=gkey)
                 _check_grid_values(study, spec.name, g, p, gkey)
     return study
 
@@ -413,6 +448,11 @@ def _expand(model: Model, params: dict, variables: dict, combine: str, key: str,
                              + ", ".join(f"{n}: {m}" for n, m in lens.items()), key=f"{key}.combine")
         combos = list(zip(*(sweeps[n] for n in names)))
     else:
+        total = math.prod(len(sweeps[n]) for n in names)
+        if total > MAX_STUDY_DESIGNS:
+            raise SceneError(f"the sweeps combine into {total} designs, which is out of range: need at "
+                             f"most {MAX_STUDY_DESIGNS} per study (use combine = 'zip', fewer points, "
+                             "or a [sweep] section)", key=f"{key}.parameters")
         combos = list(itertools.product(*(sweeps[n] for n in names)))
     points = []
     for idx, combo in enumerate(combos):
