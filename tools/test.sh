@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Sets up (tools/setup.sh) and runs every test: the C++ tests (ctest) in a warnings-as-errors
-# Release build, again under AddressSanitizer + UndefinedBehaviorSanitizer, then the Python
-# tests (pytest) against the installed package.
+# Release build, again under AddressSanitizer + UndefinedBehaviorSanitizer, a bounded fixed-seed
+# fuzzing run (tools/fuzz.sh), then the Python tests (pytest) against the installed package.
 #   bash tools/test.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -23,6 +23,9 @@ cmake -S . -B build/ci-asan -G Ninja -DCMAKE_BUILD_TYPE= -DGECKO_INSTALL=OFF \
 cmake --build build/ci-asan -j "$jobs"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir build/ci-asan --output-on-failure -j "$jobs"
+
+echo "== Fuzzing (bounded, fixed seed): elliptic kernels (libFuzzer) and the scene parser (atheris)"
+bash tools/fuzz.sh
 
 echo "== Python tests"
 .venv/bin/python -m pytest -q tests/python

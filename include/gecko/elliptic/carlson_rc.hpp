@@ -26,6 +26,7 @@ namespace detail {
 template <class T, class Policy = policies::default_policy>
 inline T carlson_rc_imp(T x, T y) {
   using std::atan;
+  using std::log;
   using std::log1p;
   using std::sqrt;
   if (x < y) {
@@ -37,7 +38,13 @@ inline T carlson_rc_imp(T x, T y) {
     const T d = x - y;
     const T sd = sqrt(d);
     const T sy = sqrt(y);
-    return log1p((d / (sqrt(x) + sy) + sd) / sy) / sd;
+    const T num = d / (sqrt(x) + sy) + sd;
+    const T t = num / sy;
+    // x/y beyond the overflow threshold (x = 1e300, y subnormal) makes t = +inf while log t is
+    // about 710: take the logarithms apart there (both are far from zero, of opposite signs,
+    // so nothing cancels). Found by fuzz/fuzz_carlson.cpp.
+    if (!(t <= std::numeric_limits<T>::max())) return (log(num) - log(sy)) / sd;
+    return log1p(t) / sd;
   }
   return 1 / sqrt(x);
 }
@@ -48,7 +55,16 @@ inline T carlson_rc_pv_imp(T x, T y) {
   using std::sqrt;
   if (x == 0) return T(0);
   const T d = x - y;
-  return sqrt(x / d) * carlson_rc_imp<T, Policy>(d, -y);
+  // x - y overflows only when x and -y are both above 2^(max_exponent - 54): quarter them
+  // (exact there) and use R_C(x/4, y/4) = 2 R_C(x, y) (found by fuzz/fuzz_carlson.cpp:
+  // R_C(DBL_MAX, -1.2e300) gave NaN).
+  if (!(d <= std::numeric_limits<T>::max()))
+    return carlson_rc_pv_imp<T, Policy>(x * T(0.25), y * T(0.25)) * T(0.5);
+  const T ratio = x / d;
+  // x/d below the normal range (x subnormal, |y| large) loses its bits or flushes to zero: take
+  // the roots apart there (found by fuzz/fuzz_carlson.cpp: R_C(4.9e-324, -50) gave 0).
+  const T factor = ratio >= std::numeric_limits<T>::min() ? sqrt(ratio) : sqrt(x) / sqrt(d);
+  return factor * carlson_rc_imp<T, Policy>(d, -y);
 }
 
 }  // namespace detail

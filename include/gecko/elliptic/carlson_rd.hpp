@@ -85,7 +85,7 @@ inline T carlson_rd_imp(T x, T y, T z) {
 }  // namespace detail
 
 template <class T, class Policy>
-inline T carlson_rd(T x, T y, T z, const Policy&) {
+inline T carlson_rd(T x, T y, T z, const Policy& pol) {
   static_assert(std::is_floating_point<T>::value, "gecko::carlson_rd: T must be a floating-point type");
   using std::isinf;
   using std::isnan;
@@ -98,7 +98,20 @@ inline T carlson_rd(T x, T y, T z, const Policy&) {
   if (!(z > 0)) return raise_domain_error<T, Policy>(function, "z", z, range);
   if (x == 0 && y == 0) return raise_domain_error<T, Policy>(function, "y", y, range);
   if (isinf(x) || isinf(y) || isinf(z)) return T(0);
-  const int e = detail::carlson_scale_exponent(detail::max_of(detail::max_of(x, y), z));
+  // R_D ~ A^(-3/2): its own window, narrower than R_F's (carlson_rd_scale_exponent).
+  const int e = detail::carlson_rd_scale_exponent(detail::max_of(detail::max_of(x, y), z));  // z > 0
+  if (e > 0 && detail::carlson_rescaling_flushes(detail::min_positive(x, y, z), e)) {
+    // Arguments too far apart for one exact rescaling (fuzz finding F2): one duplication step at
+    // their own scale (DLMF 19.26.20 with homogeneity), R_D(x, y, z) = R_D(x', y', z')/4 +
+    // 3/(sqrt(z) (z + lambda)), the last term as (3/4)/(sqrt z z') with z' = (z + lambda)/4: all
+    // positive, nothing cancels; it halves the spread, so the recursion ends within a few steps.
+    const auto d = detail::carlson_duplicate_once(x, y, z);
+    // R_D(x', y', z')/4 = 2 R_D(4x', 4y', 4z'): the left side overflows for results near DBL_MAX
+    const T inner = detail::max_of(detail::max_of(d.x, d.y), d.z) < std::numeric_limits<T>::max() / 4
+                        ? 2 * carlson_rd(4 * d.x, 4 * d.y, 4 * d.z, pol)
+                        : carlson_rd(d.x, d.y, d.z, pol) * T(0.25);
+    return inner + (T(0.75) / d.sz) / d.z;
+  }
   if (e != 0) {
     // R_D(x, y, z) = 2^(-3e/2) R_D(2^-e x, 2^-e y, 2^-e z), exactly (e is even).
     return ldexp(detail::carlson_rd_imp<T, Policy>(ldexp(x, -e), ldexp(y, -e), ldexp(z, -e)),

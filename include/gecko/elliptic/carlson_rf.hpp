@@ -129,7 +129,7 @@ inline T carlson_rf_roots_imp(T x, T y, T z, T sx, T sy, T sz) {
 }  // namespace detail
 
 template <class T, class Policy>
-inline T carlson_rf(T x, T y, T z, const Policy&) {
+inline T carlson_rf(T x, T y, T z, const Policy& pol) {
   static_assert(std::is_floating_point<T>::value, "gecko::carlson_rf: T must be a floating-point type");
   using std::isinf;
   using std::isnan;
@@ -145,6 +145,13 @@ inline T carlson_rf(T x, T y, T z, const Policy&) {
   if (isinf(x) || isinf(y) || isinf(z)) return T(0);
   const int e = detail::carlson_scale_exponent(detail::max_of(detail::max_of(x, y), z));
   if (e != 0) {
+    if (detail::carlson_rescaling_flushes(detail::min_positive(x, y, z), e)) {
+      // Arguments too far apart for one exact rescaling (fuzz finding F2): one duplication step
+      // at their own scale, R_F(x, y, z) = R_F(x', y', z') (DLMF 19.26.18), halves the spread;
+      // the recursion ends after at most a few steps.
+      const auto d = detail::carlson_duplicate_once(x, y, z);
+      return carlson_rf(d.x, d.y, d.z, pol);
+    }
     // R_F(x, y, z) = 2^(-e/2) R_F(2^-e x, 2^-e y, 2^-e z), exactly (e is even).
     return ldexp(detail::carlson_rf_imp<T, Policy>(ldexp(x, -e), ldexp(y, -e), ldexp(z, -e)),
                  -e / 2);

@@ -115,7 +115,9 @@ inline carlson_rf_gradient_result<T> carlson_rf_gradient(T x, T y, T z, const Po
     return all(raise_domain_error<T, Policy>(function, z == 0 ? "z" : "y", T(0), range));
   if (isinf(x) || isinf(y) || isinf(z)) return all(T(0));
   // R_F(2^-e v) = 2^(e/2) R_F(v) and its gradient 2^(3e/2) times: rescale exactly (e even).
-  const int e = detail::carlson_scale_exponent(detail::max_of(detail::max_of(x, y), z));
+  // The partials are R_D's (~ A^(-3/2)): R_D's window, not R_F's wider one, or A sqrt(A) over-
+  // or underflows while the partials are still normal numbers.
+  const int e = detail::carlson_rd_scale_exponent(detail::max_of(detail::max_of(x, y), z));
   const auto scaled = [e](carlson_rf_gradient_result<T> g) {
     if (e != 0) {
       g.rf = ldexp(g.rf, -e / 2);

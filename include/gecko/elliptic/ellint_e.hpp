@@ -17,7 +17,8 @@
 //   j odd:  E = j E(m) + (E(m) - E(pi/2 - r)), the bracket evaluated as
 //           (1-m) sin r R_F(L, sin^2 r + L, 1-m) + (m(1-m)/3) sin^3 r R_D(L, sin^2 r + L, 1-m),
 //           L = (1-m) cos^2 r: the tail over [pi/2 - r, pi/2] after the imaginary-modulus
-//           transformation (DLMF 19.7.5), scaled by homogeneity. m = 1: E(phi|1) = int |cos|.
+//           transformation (DLMF 19.7.5), scaled by homogeneity (for 1 - m > 1/eps the
+//           arguments are divided by 1 - m first). m = 1: E(phi|1) = int |cos|.
 //   |phi| >= 2^(digits-1): E = (2/pi) phi E(m).
 // E is odd in phi.
 //
@@ -44,6 +45,7 @@ namespace detail {
 // E(phi|m) for 0 <= phi <= pi/2 from s = sin phi >= 0, c = cos phi >= 0, (phi, m) in domain.
 template <class T, class Policy = policies::default_policy>
 inline T ellint_e_sc(T s, T c, T m) {
+  using std::fma;
   using std::sqrt;
   const T c2 = c * c;
   const T s2 = s * s;
@@ -58,8 +60,19 @@ inline T ellint_e_sc(T s, T c, T m) {
     const auto r = carlson_rf_rd_imp<T, Policy>(c2, T(1), d2);
     return s * (k2 * r.rf + (m * k2 / 3) * s2 * r.rd + m * c / sqrt(d2));
   }
-  T d2 = delta2_m_above_one(s, m);
-  if (d2 < 0) d2 = 0;
+  // Delta^2 = c^2 - (m-1) s^2, NOT 1 - m s^2: near the boundary the two terms' singular parts
+  // in sqrt(Delta^2) cancel only for a Delta^2 consistent with the rounded s and c; 1 - m s^2
+  // is off by an ulp of 1, which the R_D term amplifies by about 0.1/(m-1): 4.8e6 eps at
+  // m = 1 + 1e-7 (found by fuzz/fuzz_legendre.cpp; this form: < 1 eps against mpmath).
+  const T d2 = fma(-((m - 1) * s), s, c2);
+  if (d2 < 0) {
+    // phi beyond the edge by rounding (accepted by the domain check): evaluate AT the edge,
+    // sin^2 = 1/m, cos^2 = (m-1)/m, Delta = 0. Clamping Delta^2 alone would leave c^2 below
+    // (m-1)/m, and the R_D term ~ (m-1)/c^2 would exceed E's maximum: E(1.5707963 | 1 + 7 ulp)
+    // gave 1 + 1.8e-8 > sin phi (found by fuzz/fuzz_legendre.cpp).
+    const T ce2 = (m - 1) / m;
+    return ((m - 1) / (3 * m)) * carlson_rd_imp<T, Policy>(T(0), T(1), ce2) / sqrt(m);
+  }
   const T rd = carlson_rd_imp<T, Policy>(d2, T(1), c2);
   return s * (((m - 1) / 3) * s2 * rd + sqrt(d2) / c);
 }
@@ -72,6 +85,7 @@ inline T ellint_e_imp(T phi, T m) {
   using std::fabs;
   using std::fma;
   using std::sin;
+  using std::sqrt;
   const T a = fabs(phi);
   if (a <= pi_constants<T>::pio2_below) {
     T s, c;
@@ -96,10 +110,21 @@ inline T ellint_e_imp(T phi, T m) {
     part = s * fabs(s) / (1 + c);
   } else {
     const T lam = 1 - m;
-    const T lc2 = lam * (c * c);
     const T s2 = s * s;
-    const auto r = carlson_rf_rd_imp<T, Policy>(lc2, s2 + lc2, lam);
-    part = s * lam * (r.rf + (m / 3) * s2 * r.rd);
+    if (lam > 1 / std::numeric_limits<T>::epsilon()) {
+      // m -> -inf: the arguments above, divided by 1 - m (homogeneity), so that their sum cannot
+      // overflow and R_D (~ (1-m)^(-3/2)) cannot underflow (fuzz finding F5: E(48.7 | -DBL_MAX)
+      // gave NaN, E(2.17 | -2^698) was 5% off):
+      //   part = s sqrt(1-m) (R_F(c^2, s^2/(1-m) + c^2, 1) + (m/(1-m))/3 s^2 R_D(.., 1)).
+      // Only here: moderate m keep the route the accuracy tables test.
+      const T c2 = c * c;
+      const auto r = carlson_rf_rd_imp<T, Policy>(c2, s2 / lam + c2, T(1));
+      part = s * sqrt(lam) * (r.rf + ((m / lam) / 3) * s2 * r.rd);
+    } else {
+      const T lc2 = lam * (c * c);
+      const auto r = carlson_rf_rd_imp<T, Policy>(lc2, s2 + lc2, lam);
+      part = s * lam * (r.rf + (m / 3) * s2 * r.rd);
+    }
   }
   return copysign(fma(q.j, Em, part), phi);
 }

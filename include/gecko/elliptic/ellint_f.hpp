@@ -12,7 +12,8 @@
 //           K - F(pi/2 - r) = sin r R_F((1-m) cos^2 r, sin^2 r + (1-m) cos^2 r, 1 - m),
 //           the tail integral over [pi/2 - r, pi/2] after theta -> pi/2 - theta, which has
 //           parameter -m/(1-m) (imaginary-modulus transformation, DLMF 19.7.5), scaled by
-//           homogeneity (DLMF 19.18.1).
+//           homogeneity (DLMF 19.18.1); for 1 - m > 1/eps as sin r R_F(cos^2 r,
+//           sin^2 r/(1-m) + cos^2 r, 1)/sqrt(1-m), whose arguments cannot overflow.
 //   |phi| >= 2^(digits-1): F = (2/pi) phi K; the periodic part dropped is about 2^(1-digits)
 //           relative at most.
 // F is odd in phi. m = 1: F = atanh(sin phi) for |phi| < pi/2, +-inf beyond.
@@ -67,6 +68,7 @@ inline T ellint_f_imp(T phi, T m) {
   using std::fabs;
   using std::fma;
   using std::sin;
+  using std::sqrt;
   const T a = fabs(phi);
   if (a <= pi_constants<T>::pio2_below) {
     T s, c;
@@ -89,8 +91,15 @@ inline T ellint_f_imp(T phi, T m) {
     part = copysign(ellint_f_sc<T, Policy>(fabs(s), c, m), q.r);
   } else {
     const T lam = 1 - m;
-    const T lc2 = lam * (c * c);
-    part = s * carlson_rf_imp<T, Policy>(lc2, s * s + lc2, lam);
+    if (lam > 1 / std::numeric_limits<T>::epsilon()) {
+      // m -> -inf: the arguments divided by 1 - m (homogeneity), or their sum overflows (fuzz
+      // finding F5: NaN for 1 - m near DBL_MAX). Only here: moderate m keep the tested route.
+      const T c2 = c * c;
+      part = s * carlson_rf_imp<T, Policy>(c2, (s * s) / lam + c2, T(1)) / sqrt(lam);
+    } else {
+      const T lc2 = lam * (c * c);
+      part = s * carlson_rf_imp<T, Policy>(lc2, s * s + lc2, lam);
+    }
   }
   return copysign(fma(q.j, K, part), phi);
 }
