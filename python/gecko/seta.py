@@ -56,6 +56,14 @@ _LINE_END = {
     7: "stalled (the step collapsed; given up)",
 }
 
+_MIN_STATUS = {
+    0: "stationary",        # interior minimum, dFn/dFt = 0 verified there (slope_at_min_fn)
+    1: "range_start",       # at Ft = 0
+    2: "range_end",         # at the end of the followed range ((Ft)max or ft_end)
+    3: "line_incomplete",   # the line stopped early (see end): minimum over the followed part
+    4: "not_certified",     # a minimum could not be refined or verified: min_fn etc. are NaN
+}
+
 def _flat(x):
     a = np.asarray(x, dtype=np.float64)
     return a.shape, np.ascontiguousarray(a).reshape(-1)
@@ -92,6 +100,8 @@ class SetaCharacteristics:
     min_fn: float
     ft_at_min_fn: float
     min_fn_interior: bool
+    min_status: str
+    slope_at_min_fn: float
     max_pull_off: float
     ft_max: float
     ft_at_line_end: float
@@ -181,10 +191,13 @@ class TwoLevelSeta:
 
     def characteristics(self, ft_end: Optional[float] = None) -> SetaCharacteristics:
         """(Fn)0, slope k, max pull-off and its Ft, (Ft)max, stickiness at rest, with the
-        small-deformation (eqs 7, 18-22) values beside them."""
+        small-deformation (eqs 7, 18-22) values beside them. ``min_status`` says where the minimum
+        of Fn lies and whether it was verified ("stationary": dFn/dFt = 0 at ``ft_at_min_fn``,
+        ``slope_at_min_fn`` ~ 0; "not_certified": NaN values, never a traced node's Fn)."""
         d = _core.seta_characteristics(self._params(), math.nan if ft_end is None else float(ft_end))
         d = dict(d)
         d["end"] = _LINE_END.get(d["end"], str(d["end"]))
+        d["min_status"] = _MIN_STATUS.get(d["min_status"], str(d["min_status"]))
         d["folds"] = list(d["folds"])
         return SetaCharacteristics(**d)
 

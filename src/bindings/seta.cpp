@@ -5,14 +5,13 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <exception>
 #include <stdexcept>
-#include <thread>
 #include <vector>
 
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "gecko/core/parallel.hpp"
 #include "gecko/peel.hpp"
 #include "gecko/seta.hpp"
 
@@ -190,6 +189,8 @@ void bind_seta(py::module_& m) {
     d["min_fn"] = c.min_fn;
     d["ft_at_min_fn"] = c.ft_at_min_fn;
     d["min_fn_interior"] = c.min_fn_interior;
+    d["min_status"] = static_cast<int>(c.min_status);
+    d["slope_at_min_fn"] = c.slope_at_min_fn;
     d["max_pull_off"] = c.max_pull_off;
     d["ft_max"] = c.ft_max;
     d["ft_at_line_end"] = c.ft_at_line_end;
@@ -240,7 +241,8 @@ void bind_seta(py::module_& m) {
   // (Fn)0 and k come from the same natural state at depth 1 and 2, so they are bitwise equal.
   // Invalid designs get status 5 (invalid_input) and NaN, never an exception; status 1/3 when the
   // natural state was not found / left the model. Designs are dealt round-robin to `threads`
-  // std::threads with no shared mutable state: the result does not depend on the thread count.
+  // threads (gecko/core/parallel.hpp) with no shared mutable state: the result does not depend on
+  // the thread count.
   m.def("seta_characteristics_batch", [](const darray& designs, int depth, int threads) {
     if (designs.ndim() != 1 || designs.size() % 9 != 0)
       throw std::invalid_argument("gecko._core: designs must be a flat array of 9 numbers per design");
@@ -300,26 +302,7 @@ void bind_seta(py::module_& m) {
         r.end[i] = depth == 2 ? static_cast<std::int32_t>(c.end) : -1;
         r.folds[i] = line ? static_cast<std::int32_t>(c.folds.size()) : 0;
       };
-      unsigned nt = threads > 0 ? static_cast<unsigned>(threads) : 1u;
-      if (nd < nt) nt = nd > 0 ? static_cast<unsigned>(nd) : 1u;
-      std::vector<std::exception_ptr> errors(nt);
-      auto work = [&](unsigned t) {
-        try {
-          for (std::size_t i = t; i < nd; i += nt) one(i);
-        } catch (...) {
-          errors[t] = std::current_exception();
-        }
-      };
-      if (nt == 1) {
-        work(0);
-      } else {
-        std::vector<std::thread> pool;
-        pool.reserve(nt);
-        for (unsigned t = 0; t < nt; ++t) pool.emplace_back(work, t);
-        for (auto& th : pool) th.join();
-      }
-      for (const auto& e : errors)
-        if (e) std::rethrow_exception(e);
+      gecko::detail::parallel_for_strided(nd, threads > 0 ? static_cast<unsigned>(threads) : 1u, one);
     }
     py::dict d;
     d["status"] = status;

@@ -2,17 +2,15 @@
 //
 // Each design's critical line (gecko/seta/critical_line.hpp: natural state, continuation, states
 // at the requested Ft) is independent of the others, so designs are dealt round-robin to
-// std::threads with no shared mutable state; the result is bitwise identical for any thread
+// threads (gecko/core/parallel.hpp) with no shared mutable state; the result is bitwise identical for any thread
 // count. out is row-major: out[i * count + j] is design i at Ft[j]. Under nan_policy a bad design
 // or Ft gives status invalid_input in its entries; under the default policy the first error is
 // rethrown (std::domain_error) after all threads have joined.
 #pragma once
 
 #include <cstddef>
-#include <exception>
-#include <thread>
-#include <vector>
 
+#include "gecko/core/parallel.hpp"
 #include "gecko/core/policy.hpp"
 #include "gecko/seta/critical_line.hpp"
 
@@ -23,26 +21,9 @@ inline void critical_line_batch(const TwoLevelSeta<T>* designs, std::size_t desi
                                 std::size_t count, critical_state<T>* out, unsigned threads = 1,
                                 const critical_line_options<T>& options = critical_line_options<T>(),
                                 const Policy& pol = Policy()) {
-  const unsigned nt = threads > 0 ? threads : 1;
-  std::vector<std::exception_ptr> errors(nt);
-  auto work = [&](unsigned t) {
-    try {
-      for (std::size_t i = t; i < design_count; i += nt)
-        critical_line_at(designs[i], Ft, count, out + i * count, options, pol);
-    } catch (...) {
-      errors[t] = std::current_exception();
-    }
-  };
-  if (nt == 1) {
-    work(0);
-  } else {
-    std::vector<std::thread> pool;
-    pool.reserve(nt);
-    for (unsigned t = 0; t < nt; ++t) pool.emplace_back(work, t);
-    for (auto& th : pool) th.join();
-  }
-  for (const auto& e : errors)
-    if (e) std::rethrow_exception(e);
+  detail::parallel_for_strided(design_count, threads, [&](std::size_t i) {
+    critical_line_at(designs[i], Ft, count, out + i * count, options, pol);
+  });
 }
 
 }  // namespace gecko

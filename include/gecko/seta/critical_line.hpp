@@ -133,6 +133,19 @@ inline critical_line_point<T> line_point(const System& sys, const line_node<T, S
   return p;
 }
 
+// The line parameter of the end of a followed range, with |Ft| within rounding of (Ft)max mapped
+// to the line's end. (Ft)max has two roundings: sqrt(2 EA2 w) (ft_max, the validation and the
+// default end) and the System's sqrt(2 w / (1/EA2)); they differ by an ulp in ~7% of designs.
+// Taken literally, a default end an ulp below sys.ftmax stopped the line ~sqrt(2 eps) (Ft)max
+// short of its end in mu (labelled reached_ft_end, Fn there off by ~1e-7 from the line's end).
+template <class System, class T>
+inline T line_parameter(const System& sys, T Ft) {
+  using std::fabs;
+  if (fabs(Ft) >= sys.ftmax * (1 - 4 * std::numeric_limits<T>::epsilon()))
+    return Ft > 0 ? sys.mu_limit() : -sys.mu_limit();
+  return sys.mu_of(Ft);
+}
+
 // Natural state + the followed line in one direction, up to Ft = ft_stop. outputs: how many
 // states will be read off the line; many outputs make denser nodes pay (better Hermite guesses,
 // one Newton step per output).
@@ -157,7 +170,7 @@ inline bool trace(const System& sys, T ft_stop, T scale, const critical_line_opt
   continuation_options<T> copt;
   using std::fabs;
   copt.ft_max = sys.mu_limit();
-  copt.ft_stop = fabs(ft_stop) >= sys.ftmax ? (ft_stop > 0 ? copt.ft_max : -copt.ft_max) : sys.mu_of(ft_stop);
+  copt.ft_stop = line_parameter(sys, ft_stop);
   copt.scale = scale;
   copt.tolerance = opt.line_tolerance;
   copt.max_nodes = opt.max_points;
@@ -195,11 +208,16 @@ inline void evaluate_line(const System& sys, const traced_line<System>& line, co
     critical_state<T> r;
     r.Ft = Ft[idx];
     r.status = critical_status::no_critical_state;
-    if (!(Ft[idx] >= -sys.ftmax && Ft[idx] <= sys.ftmax)) {
+    const T slack = sys.ftmax * (1 + 4 * std::numeric_limits<T>::epsilon());
+    if (!(Ft[idx] >= -slack && Ft[idx] <= slack)) {
       out[idx] = r;
       continue;
     }
-    const T target = sys.mu_of(Ft[idx]);
+    // Validation admits Ft up to ft_max = sqrt(2 EA2 w), which may lie an ulp above the System's
+    // rounding of (Ft)max: such an Ft is the line's end. Below it Ft is taken literally (near the
+    // end Fn ~ sqrt((Ft)max - Ft): an ulp of Ft is worth ~1e-7 in Fn, tests/seta/near_singular.cpp).
+    const T target = std::fabs(Ft[idx]) >= sys.ftmax ? (Ft[idx] > 0 ? sys.mu_limit() : -sys.mu_limit())
+                                                     : sys.mu_of(Ft[idx]);
     const auto& nodes = line.nodes;
     std::size_t first = 0;
     if (nodes.size() > 1) {
@@ -249,6 +267,14 @@ inline void evaluate_line(const System& sys, const traced_line<System>& line, co
                                (z - nodes[i + 1].z).template lpNorm<Eigen::Infinity>());
         const T span = (nodes[i + 1].z - nodes[i].z).template lpNorm<Eigen::Infinity>() + fabs(nodes[i + 1].Ft - nodes[i].Ft);
         if (gap > 2 * span + T(1e-8)) st = critical_status::not_converged;
+      }
+      // The target is a traced node (the landed end of the line, at (Ft)max: the Newton's
+      // rounding floor there is above a tight tolerance, see follow_line): the node is the state.
+      if (st != critical_status::converged && (a == 0 || b == 0)) {
+        const std::size_t k = a == 0 ? i : i + 1;
+        z = nodes[k].z;
+        plan = line.plans[k];
+        st = critical_status::converged;
       }
       r = state_from(sys, z, Ft[idx], target, plan, st, its);
       break;

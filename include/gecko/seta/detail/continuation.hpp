@@ -217,18 +217,43 @@ inline traced_line<System> follow_line(const System& sys, const typename System:
     // Landing exactly on the end of the range when the step would pass it.
     xvec xp = x0 + ds * tl;
     if ((xp[n] - ft_limit) * dir >= 0 && tl[n] * dir > 0) {
-      typename System::vec z = last.z + tl.template head<n>() * ((ft_limit - last.Ft) / tl[n]);
+      const typename System::vec z_guess = last.z + tl.template head<n>() * ((ft_limit - last.Ft) / tl[n]);
+      typename System::vec z = z_guess;
       auto p = plan;
       int its = 0;
       const T u = ft_limit;
       bool ok = false;
-      for (int round = 0; round < 3 && !ok; ++round) {
-        T u14[2] = {1, 1};
-        if (System::plan_state(p) != segment_state::ok) break;
-        const auto code = newton_fixed_ft(sys, z, u, p, T(1e-13), 30, its, u14);
-        if (code != newton_code::converged) break;
-        if (sys.plan_valid(p, z, u, u14)) ok = true;
-        else p = sys.plan(z, u);
+      // Tolerances of the end state, tightest first: 1e-13 where that is attainable, else the
+      // corrector's (the accuracy of every other node), and at the line's end (Ft)max sqrt(eps).
+      // The scaled Newton step has a rounding floor: ~2e-12 near (Ft)max for Jacobians of
+      // condition ~6e6, and at (Ft)max itself, where theta2'(a) = 0 puts the spatula's turning
+      // point on the contact edge, the radicand of its angle form vanishes and rounding enters the
+      // residual as sqrt(eps) (a residual floor ~1e-8, the step's ~1e-10). With 1e-13 alone such
+      // lines never landed: they crawled into the end with halving steps and ended as
+      // no_convergence (tests/seta/line_end.cpp).
+      using std::sqrt;
+      const bool line_end_here = opt.ft_max == fabs(ft_limit);
+      const T tols[3] = {T(1e-13), opt.tolerance, line_end_here ? sqrt(std::numeric_limits<T>::epsilon()) : T(0)};
+      T tried = 0;
+      for (int attempt = 0; attempt < 3 && !ok; ++attempt) {
+        if (!(tols[attempt] > tried)) continue;
+        tried = tols[attempt];
+        z = z_guess;
+        p = plan;
+        typename System::vec z_prev = z;
+        for (int round = 0; round < 3 && !ok; ++round) {
+          T u14[2] = {1, 1};
+          if (System::plan_state(p) != segment_state::ok) break;
+          const auto code = newton_fixed_ft(sys, z, u, p, tried, 30, its, u14);
+          if (code != newton_code::converged) break;
+          // Valid plan; or the state sits on the boundary between two forms (a turning point on
+          // a segment's end, as at (Ft)max), where the plans alternate and both give it.
+          if (sys.plan_valid(p, z, u, u14) || (round > 0 && sys.step_norm(z - z_prev, z) <= tried)) ok = true;
+          else {
+            z_prev = z;
+            p = sys.plan(z, u);
+          }
+        }
       }
       if (ok && (z - last.z).template lpNorm<Eigen::Infinity>() < 4 * ds) {
         xvec tn;

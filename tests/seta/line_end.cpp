@@ -1,0 +1,157 @@
+// Tests of the end of the critical line (gecko/seta/critical_line.hpp, the landing of
+// gecko/seta/detail/continuation.hpp's follow_line on the end of its range) and of the line at
+// Ft near and at (Ft)max = sqrt(2 EA2 w) (models.md §1: the line ends there, with Fn - Fn_end
+// proportional to sqrt((Ft)max - Ft)).
+//
+// Regressions (all found by the design optimiser's sweeps):
+//  * lines that reach (Ft)max but ended with line_end::no_convergence and a flat Fn at the end
+//    (10% of random designs): the landing Newton at the end demanded a scaled step of 1e-13,
+//    below its rounding floor there, so every landing failed and the line crawled into the end;
+//  * critical_line_at(Ft) with status 2 (later 6) just below (Ft)max, the same failure at the
+//    requested end;
+//  * (Ft)max's two roundings (sqrt(2 EA2 w) and sqrt(2 w / (1/EA2)) differ by an ulp in ~7% of
+//    designs): the default line stopped ~1e-7 short of its end in the line parameter, labelled
+//    "reached the requested end"; or Ft = ft_max(seta) had no critical state.
+// Reference values: tests/data/seta_line_end.csv (mpmath, ODE route, gen_seta_line_end.py).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "gecko/seta/characteristics.hpp"
+
+namespace {
+
+struct end_case {
+  gecko::TwoLevelSeta<double> seta;
+  std::vector<std::pair<std::string, double>> fn;  // (Ft as written, or "ft_max"; Fn)
+};
+
+std::map<std::string, end_case> read_cases() {
+  std::ifstream in(std::string(GECKO_TEST_DATA_DIR) + "/seta_line_end.csv");
+  std::map<std::string, end_case> cases;
+  std::string line;
+  if (!std::getline(in, line)) return cases;
+  while (std::getline(in, line)) {
+    std::vector<std::string> c;
+    std::stringstream ss(line);
+    std::string cell;
+    while (std::getline(ss, cell, ',')) c.push_back(cell);
+    if (c.size() != 12) continue;
+    auto num = [](const std::string& s) {
+      return s == "inf" ? std::numeric_limits<double>::infinity() : std::stod(s);
+    };
+    auto& e = cases[c[0]];
+    e.seta.EI1 = num(c[1]); e.seta.EI2 = num(c[2]); e.seta.EA1 = num(c[3]); e.seta.EA2 = num(c[4]);
+    e.seta.l1 = num(c[5]); e.seta.l2 = num(c[6]); e.seta.alpha1 = num(c[7]); e.seta.alpha2 = num(c[8]);
+    e.seta.w = num(c[9]);
+    e.fn.emplace_back(c[10], std::stod(c[11]));
+  }
+  return cases;
+}
+
+double uniform01(std::uint64_t& state) {  // splitmix64: the same designs on every platform
+  std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+  z ^= z >> 31;
+  return static_cast<double>(z >> 11) * 0x1.0p-53;
+}
+
+}  // namespace
+
+TEST_CASE("lines that reach (Ft)max end there, at the reference state", "[seta][line_end][regression]") {
+  const auto cases = read_cases();
+  REQUIRE(cases.size() == 6);
+  for (const auto& [name, e] : cases) {
+    const auto& s = e.seta;
+    const double fm = gecko::ft_max(s);
+    const auto line = gecko::critical_line(s);
+    const auto c = gecko::characteristics(s);
+    INFO(name << ": end " << static_cast<int>(line.end) << " after " << line.points.size() << " nodes, last Ft "
+              << line.points.back().Ft << " of " << fm);
+    CHECK(line.end == gecko::line_end::reached_ft_max);
+    CHECK(std::fabs(line.points.back().Ft - fm) <= 4 * std::numeric_limits<double>::epsilon() * fm);
+    CHECK(c.end == gecko::line_end::reached_ft_max);
+    CHECK(c.min_status != gecko::minimum_status::line_incomplete);
+    CHECK(c.min_status != gecko::minimum_status::not_certified);
+    std::vector<double> ft;
+    for (const auto& [t, fn] : e.fn) ft.push_back(t == "ft_max" ? fm : std::stod(t));
+    const auto all = gecko::critical_line_at(s, ft);
+    for (std::size_t k = 0; k < ft.size(); ++k) {
+      // Each target alone too: then it is the requested end of the traced range.
+      const auto alone = gecko::critical_line_at(s, std::vector<double>{ft[k]});
+      CHECK(alone[0].status == all[k].status);
+      CHECK(alone[0].Fn == Approx(all[k].Fn).margin(1e-10));
+      const auto& at = alone;
+      const double ref = e.fn[k].second;
+      INFO("Ft " << e.fn[k].first << " = " << ft[k] << ": status " << static_cast<int>(at[0].status) << " Fn "
+                 << at[0].Fn << " reference " << ref);
+      CHECK(at[0].status == gecko::critical_status::converged);
+      if (at[0].status != gecko::critical_status::converged) continue;
+      if (e.fn[k].first == "ft_max") {
+        // The line's end (its parameter's end, as critical_line and characteristics report it)
+        // is the reference state; critical_line_at(ft_max(seta)) takes Ft literally, and where
+        // ft_max = sqrt(2 EA2 w) lies an ulp below the System's sqrt(2 w / (1/EA2)) it is a state
+        // an ulp of Ft before the end, ~1e-7 away in Fn (Fn ~ sqrt((Ft)max - Ft)).
+        const bool same_rounding = std::sqrt(2 * s.w / (1 / s.EA2)) <= fm;
+        // At the end the Newton step has a rounding floor of ~1e-10 (the spatula's turning
+        // point sits on the contact edge, where rounding enters the residual as sqrt(eps));
+        // the end is the line's end in its parameter, not Ft rounded (Fn ~ sqrt((Ft)max - Ft)
+        // would make an ulp of Ft worth 1e-7). Measured: at most 1.1e-10 (sqrt_eps_floor).
+        CHECK(std::fabs(at[0].Fn - ref) <= (same_rounding ? 1e-9 : 1e-6));
+        CHECK(std::fabs(line.points.back().Fn - ref) <= 1e-9);
+        CHECK(std::fabs(c.fn_at_line_end - ref) <= 1e-9);
+      } else {
+        // An exact double Ft below the end: full accuracy (measured 5e-13).
+        CHECK(std::fabs(at[0].Fn - ref) <= 1e-11 * std::max(1.0, std::fabs(ref)));
+      }
+    }
+  }
+}
+
+TEST_CASE("the line reaches (Ft)max for random designs, and is solved there", "[seta][line_end][random]") {
+  // The box of the design optimiser's sweeps (as tests/seta/characteristics.cpp, another seed):
+  // EI1 in [1, 20], EI2 in [0.1, 5] (log-uniform), EA2 in [50, 500], l2 in [0.05, 0.5], alpha1
+  // in [0.3, 1.2], alpha2 in [0.05, min(1, pi/2 - alpha1 - 0.05)]. Before the fix 10% of such
+  // lines ended in no_convergence and 3.6% as reached_ft_end, and critical_line_at(ft_max)
+  // failed for 13%.
+  std::uint64_t rng = 7;
+  int n = 0;
+  for (int k = 0; k < 200; ++k) {
+    gecko::TwoLevelSeta<double> s;
+    s.EI1 = 1 + 19 * uniform01(rng);
+    s.EI2 = 0.1 * std::exp(std::log(50.0) * uniform01(rng));
+    s.EA2 = 50 + 450 * uniform01(rng);
+    s.l2 = 0.05 + 0.45 * uniform01(rng);
+    s.alpha1 = 0.3 + 0.9 * uniform01(rng);
+    s.alpha2 = 0.05 + (std::min(1.0, 1.5707963267948966 - s.alpha1 - 0.05) - 0.05) * uniform01(rng);
+    const double fm = gecko::ft_max(s);
+    const auto line = gecko::critical_line(s);
+    INFO("design " << k << ": EI1 " << s.EI1 << " EI2 " << s.EI2 << " EA2 " << s.EA2 << " l2 " << s.l2 << " alpha1 "
+                   << s.alpha1 << " alpha2 " << s.alpha2 << "; end " << static_cast<int>(line.end) << " at Ft "
+                   << line.points.back().Ft);
+    CHECK(line.end == gecko::line_end::reached_ft_max);
+    // The same end, asked for explicitly.
+    gecko::critical_line_options<double> opt;
+    opt.ft_end = fm;
+    CHECK(gecko::critical_line(s, opt).end == gecko::line_end::reached_ft_max);
+    const auto at = gecko::critical_line_at(s, std::vector<double>{fm * (1 - 1e-6), fm});
+    CHECK(at[0].status == gecko::critical_status::converged);
+    CHECK(at[1].status == gecko::critical_status::converged);
+    // The landed end node and this state: the same line parameter, unless ft_max lies an ulp
+    // below the System's (Ft)max (then an ulp of Ft before the end, see above).
+    const bool same_rounding = std::sqrt(2 * s.w / (1 / s.EA2)) <= fm;
+    if (at[1].status == gecko::critical_status::converged)
+      CHECK(std::fabs(at[1].Fn - line.points.back().Fn) <= (same_rounding ? 1e-9 : 1e-6));
+    n += line.end == gecko::line_end::reached_ft_max;
+  }
+  WARN(n << " of 200 lines reached (Ft)max");
+  CHECK(n == 200);
+}
