@@ -268,9 +268,13 @@ inline void evaluate_line(const System& sys, const traced_line<System>& line, co
         const T span = (nodes[i + 1].z - nodes[i].z).template lpNorm<Eigen::Infinity>() + fabs(nodes[i + 1].Ft - nodes[i].Ft);
         if (gap > 2 * span + T(1e-8)) st = critical_status::not_converged;
       }
-      // The target is a traced node (the landed end of the line, at (Ft)max: the Newton's
-      // rounding floor there is above a tight tolerance, see follow_line): the node is the state.
-      if (st != critical_status::converged && (a == 0 || b == 0)) {
+      // The target is the landed end of the line (at (Ft)max the Newton's rounding floor is above
+      // a tight tolerance, see follow_line, and the end node was accepted by the landing's own
+      // checks): that node is the state. Only the landed end: an interior node is a predictor-
+      // corrector point at the line tolerance, and a failed re-solve there must stay a failure.
+      const bool landed = line.end == line_end::reached_ft_max || line.end == line_end::reached_ft_end;
+      const std::size_t last = nodes.size() - 1;
+      if (st != critical_status::converged && landed && ((a == 0 && i == last) || (b == 0 && i + 1 == last))) {
         const std::size_t k = a == 0 ? i : i + 1;
         z = nodes[k].z;
         plan = line.plans[k];
