@@ -71,7 +71,12 @@ def _flat(x):
 
 @dataclass
 class CriticalLine:
-    """The critical line at requested Ft values (same shape as ``Ft``); NaN where ``status != 0``."""
+    """The critical line at requested Ft values (same shape as ``Ft``); NaN where ``status != 0``.
+
+    For the traced line (``critical_line()`` without ``Ft``) every node has values: status 0 marks a
+    node re-solved by Newton to the state tolerance (1e-12), status 1 one that could not be (its
+    values are the continuation's, accurate to about the line tolerance 1e-10 only; drawn, not to be
+    used as a result)."""
 
     Ft: np.ndarray
     Fn: np.ndarray
@@ -153,14 +158,15 @@ class TwoLevelSeta:
         crossing; negative Ft along the line followed towards negative Ft), each solved by Newton to
         ``tolerance`` (default 1e-12, scaled step). Without ``Ft``: the nodes of the continuation from
         Ft = 0 to ``ft_end`` (default (Ft)max, or 3 sqrt(EI1 w)/l1 for EA2 = inf), through folds,
-        with ``folds`` and ``end`` (why the line stopped).
+        with ``folds`` and ``end`` (why the line stopped); each node re-solved to the state tolerance
+        (``status`` 0) or marked (1).
         """
         params = self._params()
         if Ft is None:
             d = _core.seta_critical_line(params, math.nan if ft_end is None else float(ft_end))
             n = len(d["Ft"])
             return CriticalLine(Ft=d["Ft"], Fn=d["Fn"], theta_joint=d["theta_joint"],
-                                status=np.zeros(n, dtype=np.int32), iterations=np.zeros(n, dtype=np.int32),
+                                status=d["status"], iterations=np.zeros(n, dtype=np.int32),
                                 theta_rate_joint=d["theta_rate_joint"], theta_rate_base=d["theta_rate_base"],
                                 turning_points_beam=d["turning_points_beam"],
                                 turning_points_spatula=d["turning_points_spatula"],

@@ -121,9 +121,10 @@ void bind_seta(py::module_& m) {
     }
     const auto n = static_cast<py::ssize_t>(r.points.size());
     py::array_t<double> Ft(n), Fn(n), beta(n), rj(n), rb(n);
-    py::array_t<std::int32_t> tpb(n), tps(n), branch(n);
+    py::array_t<std::int32_t> tpb(n), tps(n), branch(n), status(n);
     for (py::ssize_t i = 0; i < n; ++i) {
       const auto& p = r.points[static_cast<std::size_t>(i)];
+      status.mutable_data()[i] = static_cast<std::int32_t>(p.status);
       Ft.mutable_data()[i] = p.Ft;
       Fn.mutable_data()[i] = p.Fn;
       beta.mutable_data()[i] = p.theta_joint;
@@ -142,6 +143,7 @@ void bind_seta(py::module_& m) {
     d["turning_points_beam"] = tpb;
     d["turning_points_spatula"] = tps;
     d["branch"] = branch;
+    d["status"] = status;
     d["folds"] = py::cast(r.folds);
     d["end"] = static_cast<int>(r.end);
     d["natural_Fn"] = r.natural.Fn;

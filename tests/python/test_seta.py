@@ -106,6 +106,24 @@ def test_traced_line_and_characteristics():
     assert s.small_deformation_fn(0.0) == pytest.approx(c.small_fn0)
 
 
+def test_traced_nodes_carry_a_status():
+    # Reference scene: every node re-solved (status 0) and equal to the state solved at its Ft.
+    s = gecko.TwoLevelSeta()
+    line = s.critical_line()
+    assert line.status.dtype == np.int32 and np.all(line.status == 0)
+    pick = np.arange(1, len(line.Ft), max(1, len(line.Ft) // 12))
+    at = s.critical_line(Ft=line.Ft[pick])
+    np.testing.assert_allclose(at.Fn, line.Fn[pick], rtol=1e-12, atol=1e-12)
+    # A line at forces ~100 whose Newton steps at 1e-12 hit their rounding floor at some nodes
+    # (bench/stress/traced_nodes.py): those nodes say so (status 1) and keep finite values.
+    s = gecko.TwoLevelSeta(EI1=3.4819510836166394, EI2=15.497815605161746, EA1=15.40193091295868,
+                           EA2=3183.8725667297713, l2=0.02038078921865084, alpha1=0.5386040251416762,
+                           alpha2=1.0098973821140953)
+    line = s.critical_line()
+    assert set(np.unique(line.status)) <= {0, 1} and np.any(line.status == 1) and line.status[0] == 0
+    assert np.all(np.isfinite(line.Fn)) and np.all(np.isfinite(line.theta_joint))
+
+
 def test_solve_with_and_without_guess():
     s = gecko.TwoLevelSeta()
     a = s.solve(5.0)

@@ -190,6 +190,60 @@ TEST_CASE("a line that ends exactly at the requested Ft is solved from its end n
   }
 }
 
+TEST_CASE("traced nodes are re-solved to the state tolerance, or say they are not", "[seta][line][nodes]") {
+  // Reference scene: every node re-solved, and nodes spread along the line agree with the RK4
+  // shooting (an independent route) to the states' 1e-11.
+  {
+    const gecko::TwoLevelSeta<double> s;
+    const auto line = gecko::critical_line(s);
+    REQUIRE(line.points.size() > 20);
+    for (const auto& p : line.points) REQUIRE(p.status == gecko::critical_status::converged);
+    for (std::size_t i = 0; i < line.points.size(); i += line.points.size() / 10) {
+      const auto& p = line.points[i];
+      INFO("node " << i << " Ft " << p.Ft);
+      const long double err = seta_test::fn_error(s, p.Fn, p.Ft);
+      CHECK(std::fabs(static_cast<double>(err)) <= 1e-11 * std::max(1.0, std::fabs(p.Fn)));
+    }
+  }
+  // A line that runs along a form boundary until it stalls (stress box, bench/stress/traced_nodes.py):
+  // its raw continuation nodes, accepted at the line tolerance where the Jacobian is
+  // ill-conditioned, are off by up to 4e-9. Each re-solved node must be a converged state: Newton
+  // started from it (a fresh solve, plan included) does not move it by more than 1e-12 (scaled).
+  gecko::TwoLevelSeta<double> s;
+  s.EI1 = 109.03561709410768;
+  s.EI2 = 10445.851940246343;
+  s.EA1 = 4.8534128346462735;
+  s.EA2 = 4438510.754279062;
+  s.l2 = 0.06765687857959017;
+  s.alpha1 = 0.4202264003740614;
+  s.alpha2 = 0.5224316334220043;
+  const auto line = gecko::critical_line(s);
+  gecko::critical_line_options<double> raw_options;
+  raw_options.resolve_nodes = false;
+  const auto raw = gecko::critical_line(s, raw_options);
+  CHECK(line.end == gecko::line_end::stalled);
+  REQUIRE(line.points.size() == raw.points.size());
+  REQUIRE(line.points.size() > 100);
+  CHECK(raw.points[0].status == gecko::critical_status::converged);  // the natural state
+  double worst_raw = 0, worst = 0;
+  int resolved = 0;
+  for (std::size_t i = 0; i < line.points.size(); ++i) {
+    const auto& p = line.points[i];
+    if (i > 0) CHECK(raw.points[i].status == gecko::critical_status::not_converged);
+    if (p.status != gecko::critical_status::converged) continue;
+    ++resolved;
+    const auto q = gecko::solve_critical(s, p.Ft, gecko::critical_guess<double>{p.Fn, p.theta_joint, p.theta_rate_joint,
+                                                                                 p.theta_rate_base});
+    REQUIRE(q.status == gecko::critical_status::converged);
+    const double scale = std::max(1.0, std::fabs(q.Fn));
+    worst = std::max(worst, std::fabs(p.Fn - q.Fn) / scale);
+    if (raw.points[i].Ft == p.Ft) worst_raw = std::max(worst_raw, std::fabs(raw.points[i].Fn - q.Fn) / scale);
+  }
+  CHECK(resolved == static_cast<int>(line.points.size()));
+  CHECK(worst <= 1e-12);
+  CHECK(worst_raw > 1e-9);  // what the re-solve removes
+}
+
 TEST_CASE("EA = 1e12 is continuous with EA = infinity", "[seta][line]") {
   gecko::TwoLevelSeta<double> a, b;
   a.EA2 = std::numeric_limits<double>::infinity();

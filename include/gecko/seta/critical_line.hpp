@@ -37,6 +37,12 @@ struct critical_line_options {
   T tolerance = T(1e-12);
   T line_tolerance = T(1e-10);  // corrector tolerance of the traced nodes
   int max_points = 100000;
+  // critical_line(): re-solve every traced node to `tolerance` before returning it (a node is a
+  // predictor-corrector point accepted at line_tolerance, and near form boundaries, where the
+  // Jacobian is ill-conditioned, that step test let errors of ~1e-8 through). Costs about one
+  // Jacobian evaluation per node; false returns the raw nodes with status not_converged (all but
+  // the natural state).
+  bool resolve_nodes = true;
 };
 
 template <class T>
@@ -44,6 +50,10 @@ struct critical_line_point {
   T Ft, Fn, theta_joint, theta_rate_joint, theta_rate_base;
   int turning_points_beam, turning_points_spatula;
   int branch;  // folds passed since Ft = 0
+  // converged: re-solved to critical_line_options::tolerance (or the natural state, or the
+  // landed end of the line). not_converged: the node could not be re-solved; its values are the
+  // continuation's, accurate to about line_tolerance only, and kept so the line can be drawn.
+  critical_status status;
 };
 
 template <class T>
@@ -121,8 +131,9 @@ inline critical_status natural_state(const System& sys, typename System::vec& z,
 
 template <class System, class T>
 inline critical_line_point<T> line_point(const System& sys, const line_node<T, System::n>& node,
-                                         const typename System::plan_type& plan) {
+                                         const typename System::plan_type& plan, critical_status status) {
   critical_line_point<T> p;
+  p.status = status;
   p.Ft = sys.ft_of(node.Ft);  // node.Ft holds the line parameter mu
   p.Fn = node.z[0];
   p.theta_joint = sys.theta_joint(node.z);
@@ -287,6 +298,54 @@ inline void evaluate_line(const System& sys, const traced_line<System>& line, co
   }
 }
 
+// Re-solve traced node i to tol (see critical_line_options::resolve_nodes). First by Newton at
+// the node's own line parameter; at a fold that Jacobian is singular (dmu/ds = 0), so then by the
+// bordered arclength corrector, which moves the node orthogonally to the line's tangent. A
+// re-solved state more than 1e-6 (scaled) from the node is not accepted: the node itself is
+// within ~1e-8 of the line, so such a state is the other branch near a fold.
+template <class System, class T>
+inline critical_status resolve_node(const System& sys, const traced_line<System>& line, std::size_t i, T scale,
+                                    T tol, line_node<T, System::n>& node, typename System::plan_type& plan) {
+  constexpr int n = System::n;
+  using std::fabs;
+  const auto& orig = line.nodes[i];
+  const T max_move = T(1e-6);
+  {
+    typename System::vec z = orig.z;
+    auto p = line.plans[i];
+    int its = 0;
+    if (solve_with_plans(sys, z, orig.Ft, p, tol, 40, its) == critical_status::converged &&
+        sys.step_norm(z - orig.z, orig.z) <= max_move) {
+      node.z = z;
+      plan = p;
+      return critical_status::converged;
+    }
+  }
+  {
+    Eigen::Matrix<T, n + 1, 1> x;
+    x.template head<n>() = orig.z;
+    x[n] = orig.Ft;
+    auto p = line.plans[i];
+    int its = 0;
+    T u14[2] = {1, 1};
+    T omega = 0;
+    if (arclength_corrector(sys, x, orig.tangent, p, tol, scale, its, u14, omega) &&
+        sys.plan_valid(p, x.template head<n>(), x[n], u14) && fabs(x[n]) <= sys.mu_limit() &&
+        sys.step_norm(x.template head<n>() - orig.z, orig.z) <= max_move &&
+        fabs(x[n] - orig.Ft) <= max_move * scale) {
+      node.z = x.template head<n>();
+      node.Ft = x[n];
+      plan = p;
+      return critical_status::converged;
+    }
+  }
+  // The landed end of the line was accepted by the landing's own checks (at (Ft)max the Newton
+  // step has a rounding floor above a tight tolerance: see follow_line and evaluate_line).
+  const bool landed = line.end == line_end::reached_ft_max || line.end == line_end::reached_ft_end;
+  if (landed && i + 1 == line.nodes.size()) return critical_status::converged;
+  return critical_status::not_converged;
+}
+
 template <class Policy, bool E1, bool E2, class T>
 inline critical_line_result<T> critical_line_imp(const TwoLevelSeta<T>& s, const critical_line_options<T>& opt) {
   using System = seta_system<T, Policy, E1, E2>;
@@ -301,7 +360,18 @@ inline critical_line_result<T> critical_line_imp(const TwoLevelSeta<T>& s, const
   trace(sys, end, scale, opt, 0, z0, plan0, r.natural, line);
   r.end = line.end;
   for (T f : line.folds) r.folds.push_back(sys.ft_of(f));
-  for (std::size_t i = 0; i < line.nodes.size(); ++i) r.points.push_back(line_point(sys, line.nodes[i], line.plans[i]));
+  for (std::size_t i = 0; i < line.nodes.size(); ++i) {
+    // Node 0 is the natural state, solved to 1e-12 by natural_state.
+    if (i == 0) {
+      r.points.push_back(line_point(sys, line.nodes[0], line.plans[0], critical_status::converged));
+      continue;
+    }
+    auto node = line.nodes[i];
+    auto plan = line.plans[i];
+    const critical_status st = opt.resolve_nodes ? resolve_node(sys, line, i, scale, opt.tolerance, node, plan)
+                                                 : critical_status::not_converged;
+    r.points.push_back(line_point(sys, node, plan, st));
+  }
   return r;
 }
 
