@@ -192,16 +192,6 @@ std::string md_cell(const std::string& s) {
   return out;
 }
 
-// CSV text fields: always quoted (R_F(x,y,z) and the input-set names contain commas).
-std::string csv_text(const std::string& s) {
-  std::string out = "\"";
-  for (char ch : s) {
-    if (ch == '"') out += '"';
-    out += ch;
-  }
-  return out + "\"";
-}
-
 std::string fmt(double v, int prec) {
   if (std::isinf(v)) return "inf";
   std::ostringstream s;

@@ -15,6 +15,9 @@
 // shared with other jobs, the intervals when the scheduler runs someone else are then not counted.
 // What remains (cache and memory-bandwidth interference, frequency changes) is what the median
 // over repetitions and the interleaving are for.
+//
+// Also here: csv_text, the one CSV quoting of the benchmarks that write result tables
+// (bench_elliptic, bench/tradeoff/bench_tradeoff.cpp).
 #pragma once
 
 #include <algorithm>
@@ -22,6 +25,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace gecko_bench {
@@ -127,6 +131,17 @@ inline double time_cases(std::vector<timed_case>& cases, int reps, double target
     c.result.min_ns = *std::min_element(c.samples_ns.begin(), c.samples_ns.end());
   }
   return checksum;
+}
+
+// A CSV text field: always quoted (R_F(x,y,z) and the input-set names contain commas), a quote
+// inside doubled (RFC 4180).
+inline std::string csv_text(const std::string& s) {
+  std::string out = "\"";
+  for (char ch : s) {
+    if (ch == '"') out += '"';
+    out += ch;
+  }
+  return out + "\"";
 }
 
 }  // namespace gecko_bench

@@ -77,15 +77,6 @@ struct result_row {
   std::string note;
 };
 
-std::string csv_text(const std::string& s) {
-  std::string out = "\"";
-  for (char ch : s) {
-    if (ch == '"') out += '"';
-    out += ch;
-  }
-  return out + "\"";
-}
-
 std::vector<std::string> split_csv_line(const std::string& line) {
   std::vector<std::string> f;
   std::stringstream ss(line);

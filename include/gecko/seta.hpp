@@ -6,9 +6,11 @@
 //                                                special-cased at compile time; turning points)
 //   solve_critical(seta, Ft[, guess, options])   one critical state (Newton, exact Jacobian)
 //   critical_line(seta, options)                 the line from Ft = 0 through folds to (Ft)max
+//                                                (every node re-solved, with a status)
 //   critical_line_at(seta, Ft...)                the line at given Ft values
 //   critical_line_batch(designs, Ft, threads)    many designs x many Ft, multithreaded
 //   characteristics(seta)                        (Fn)0, k, max pull-off, (Ft)max, stickiness
+//   characteristics_batch(designs, n, depth, out, threads)  many designs, each solved only to `depth`
 //   critical_equations(seta, Ft, ...)            residual and exact Jacobian at a state
 //   sensitivities(seta, Ft)                      dFn/d(design) by implicit differentiation
 //   shape(seta, state)                           deformed shape x(s), z(s) of a solved state
@@ -17,6 +19,7 @@
 
 #include "gecko/seta/batch.hpp"
 #include "gecko/seta/characteristics.hpp"
+#include "gecko/seta/characteristics_batch.hpp"
 #include "gecko/seta/critical_line.hpp"
 #include "gecko/seta/elastica_segment.hpp"
 #include "gecko/seta/solve_critical.hpp"

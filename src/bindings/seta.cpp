@@ -235,21 +235,15 @@ void bind_seta(py::module_& m) {
      py::arg("tolerance") = std::nan(""));
 
   // Characteristics of many designs (the design sweep, python/gecko/design_sweep.py): designs is
-  // (n*9) flat; depth says how much is solved, so a sweep pays only for the outputs it asks for:
-  //   0  closed forms only: (Ft)max and the small-deformation quantities (no solver);
-  //   1  + the natural state at Ft = 0 and the exact slope there: (Fn)0, k, sticky at rest
-  //      (characteristics with ft_end = 0: no line is traced);
-  //   2  + the line followed to its end: max pull-off and its Ft, the line's end.
-  // (Fn)0 and k come from the same natural state at depth 1 and 2, so they are bitwise equal.
-  // Invalid designs get status 5 (invalid_input) and NaN, never an exception; status 1/3 when the
-  // natural state was not found / left the model. Designs are dealt round-robin to `threads`
-  // threads (gecko/core/parallel.hpp) with no shared mutable state: the result does not depend on
-  // the thread count.
+  // (n*9) flat; depth 0 / 1 / 2 is characteristics_depth closed_forms / natural_state / whole_line
+  // (gecko/seta/characteristics_batch.hpp: what each depth solves, the statuses, NaN for what it
+  // does not). line_end is -1 below depth 2. Never raises for a bad design (status 5).
   m.def("seta_characteristics_batch", [](const darray& designs, int depth, int threads) {
     if (designs.ndim() != 1 || designs.size() % 9 != 0)
       throw std::invalid_argument("gecko._core: designs must be a flat array of 9 numbers per design");
     if (depth < 0 || depth > 2)
       throw std::invalid_argument("gecko._core: depth must be 0 (closed forms), 1 (natural state) or 2 (line)");
+    const auto how = static_cast<characteristics_depth>(depth);
     const auto nd = static_cast<std::size_t>(designs.size() / 9);
     const auto n = static_cast<py::ssize_t>(nd);
     py::array_t<double> fn0(n), slope_k(n), min_fn(n), ft_at_min_fn(n), max_pull_off(n), ftmax(n),
@@ -268,43 +262,30 @@ void bind_seta(py::module_& m) {
     const double* p = designs.data();
     {
       py::gil_scoped_release release;
-      const double nan = std::nan("");
-      auto one = [&](std::size_t i) {
-        const auto s = design_from(p + 9 * i);
-        seta_characteristics<double> c;
-        std::int32_t st = 0;
-        if (!detail::check_seta<double, nan_policy>(s, "gecko.sweep")) {
-          st = static_cast<std::int32_t>(critical_status::invalid_input);
-        } else if (depth == 0) {
-          c.small = small_deformation(s, nan_policy());
-          c.ft_max = ft_max(s);
-        } else {
-          c = characteristics(s, line_options(depth == 1 ? 0.0 : nan, nan), nan_policy());
-          if (c.end == line_end::no_natural_state) st = static_cast<std::int32_t>(critical_status::not_converged);
-          else if (c.end == line_end::unsupported_state && !(c.fn0 == c.fn0))
-            st = static_cast<std::int32_t>(critical_status::unsupported_state);
-        }
-        const bool line = depth == 2 && st == 0;
+      std::vector<TwoLevelSeta<double>> ds(nd);
+      for (std::size_t i = 0; i < nd; ++i) ds[i] = design_from(p + 9 * i);
+      std::vector<design_characteristics<double>> out(nd);
+      characteristics_batch(ds.data(), nd, how, out.data(), threads > 0 ? static_cast<unsigned>(threads) : 1u);
+      for (std::size_t i = 0; i < nd; ++i) {
+        const auto& c = out[i];
         r.fn0[i] = c.fn0;
         r.k[i] = c.slope_k;
-        r.min_fn[i] = line ? c.min_fn : nan;
-        r.ft_min[i] = line ? c.ft_at_min_fn : nan;
-        r.pull[i] = line ? c.max_pull_off : nan;
+        r.min_fn[i] = c.min_fn;
+        r.ft_min[i] = c.ft_at_min_fn;
+        r.pull[i] = c.max_pull_off;
         r.ftmax[i] = c.ft_max;
-        r.ft_end[i] = line ? c.ft_at_line_end : nan;
-        r.fn_end[i] = line ? c.fn_at_line_end : nan;
-        const bool small_ok = st != static_cast<std::int32_t>(critical_status::invalid_input);
-        r.sfn0[i] = small_ok ? c.small.fn0 : nan;
-        r.sk[i] = small_ok ? c.small.slope_k : nan;
-        r.slc[i] = small_ok ? c.small.contact_length : nan;
-        r.sticky[i] = static_cast<std::int8_t>(depth >= 1 && st == 0 && c.sticky_at_rest);
-        r.sns[i] = static_cast<std::int8_t>(small_ok && c.small.non_sticky);
-        r.interior[i] = static_cast<std::int8_t>(line && c.min_fn_interior);
-        r.status[i] = st;
-        r.end[i] = depth == 2 ? static_cast<std::int32_t>(c.end) : -1;
-        r.folds[i] = line ? static_cast<std::int32_t>(c.folds.size()) : 0;
-      };
-      gecko::detail::parallel_for_strided(nd, threads > 0 ? static_cast<unsigned>(threads) : 1u, one);
+        r.ft_end[i] = c.ft_at_line_end;
+        r.fn_end[i] = c.fn_at_line_end;
+        r.sfn0[i] = c.small.fn0;
+        r.sk[i] = c.small.slope_k;
+        r.slc[i] = c.small.contact_length;
+        r.sticky[i] = static_cast<std::int8_t>(c.sticky_at_rest);
+        r.sns[i] = static_cast<std::int8_t>(c.small.non_sticky);
+        r.interior[i] = static_cast<std::int8_t>(c.min_fn_interior);
+        r.status[i] = static_cast<std::int32_t>(c.status);
+        r.end[i] = how == characteristics_depth::whole_line ? static_cast<std::int32_t>(c.end) : -1;
+        r.folds[i] = c.folds;
+      }
     }
     py::dict d;
     d["status"] = status;

@@ -15,6 +15,7 @@
 
 #include "gecko/seta/characteristics.hpp"
 #include "gecko/seta/sensitivities.hpp"
+#include "seta/random_designs.hpp"
 
 namespace {
 double parse(const std::string& s) {
@@ -194,14 +195,6 @@ bool brent_min_fn(const gecko::TwoLevelSeta<double>& s, double a, double b, cons
   return ok;
 }
 
-double uniform01(std::uint64_t& state) {  // splitmix64: the same designs on every platform
-  std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-  z ^= z >> 31;
-  return static_cast<double>(z >> 11) * 0x1.0p-53;
-}
-
 }  // namespace
 
 TEST_CASE("max pull-off where the turning points change inside the bracket", "[seta][characteristics][regression]") {
@@ -245,13 +238,7 @@ TEST_CASE("max pull-off against a dense sample of the line, random designs", "[s
   int interior = 0, checked_two_sided = 0, turning = 0, incomplete = 0;
   double worst_gap = 0, worst_slope = 0;
   for (int k = 0; k < designs; ++k) {
-    gecko::TwoLevelSeta<double> s;
-    s.EI1 = 1 + 19 * uniform01(rng);
-    s.EI2 = 0.1 * std::exp(std::log(50.0) * uniform01(rng));
-    s.EA2 = 50 + 450 * uniform01(rng);
-    s.l2 = 0.05 + 0.45 * uniform01(rng);
-    s.alpha1 = 0.3 + 0.9 * uniform01(rng);
-    s.alpha2 = 0.05 + (std::min(1.0, 1.5707963267948966 - s.alpha1 - 0.05) - 0.05) * uniform01(rng);
+    const auto s = seta_test::sweep_box_design(rng);
     const auto c = gecko::characteristics(s);
     INFO("design " << k << ": EI1 " << s.EI1 << " EI2 " << s.EI2 << " EA2 " << s.EA2 << " l2 " << s.l2
          << " alpha1 " << s.alpha1 << " alpha2 " << s.alpha2 << "; min_fn " << c.min_fn << " at Ft "

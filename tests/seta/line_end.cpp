@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "gecko/seta/characteristics.hpp"
+#include "seta/random_designs.hpp"
 
 namespace {
 
@@ -54,14 +55,6 @@ std::map<std::string, end_case> read_cases() {
     e.fn.emplace_back(c[10], std::stod(c[11]));
   }
   return cases;
-}
-
-double uniform01(std::uint64_t& state) {  // splitmix64: the same designs on every platform
-  std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-  z ^= z >> 31;
-  return static_cast<double>(z >> 11) * 0x1.0p-53;
 }
 
 }  // namespace
@@ -125,13 +118,7 @@ TEST_CASE("the line reaches (Ft)max for random designs, and is solved there", "[
   std::uint64_t rng = 7;
   int n = 0;
   for (int k = 0; k < 200; ++k) {
-    gecko::TwoLevelSeta<double> s;
-    s.EI1 = 1 + 19 * uniform01(rng);
-    s.EI2 = 0.1 * std::exp(std::log(50.0) * uniform01(rng));
-    s.EA2 = 50 + 450 * uniform01(rng);
-    s.l2 = 0.05 + 0.45 * uniform01(rng);
-    s.alpha1 = 0.3 + 0.9 * uniform01(rng);
-    s.alpha2 = 0.05 + (std::min(1.0, 1.5707963267948966 - s.alpha1 - 0.05) - 0.05) * uniform01(rng);
+    const auto s = seta_test::sweep_box_design(rng);
     const double fm = gecko::ft_max(s);
     const auto line = gecko::critical_line(s);
     INFO("design " << k << ": EI1 " << s.EI1 << " EI2 " << s.EI2 << " EA2 " << s.EA2 << " l2 " << s.l2 << " alpha1 "
