@@ -7,7 +7,9 @@
 // not_reached, and the states that are returned agree with the RK4 shooting of the ODE.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "gecko/seta/critical_line.hpp"
@@ -77,5 +79,42 @@ TEST_CASE("states beyond a given-up line are 'not reached', never 'no critical s
     }
     CHECK(solved >= 1);     // the natural state at least
     CHECK(unreached >= 2);  // (Ft)max end not reached in any of them
+  }
+}
+
+TEST_CASE("turning points on a libration path of more than one period are counted", "[seta][stress][turning]") {
+  // bench/stress/stress_10000.npz: a spatula (first) and a beam (second) that run through a whole
+  // libration period plus 0.001-0.002 rad. The Newton solve keeps a phase plan that added a period
+  // while the end phase moved past the start; the end signs alone then reported 0 turning points
+  // where the ODE has 2 (the states themselves agree with the verifier to 2e-16).
+  struct turning_case {
+    gecko::TwoLevelSeta<double> s;
+    double Ft;
+  };
+  std::vector<turning_case> cases(2);
+  auto& a = cases[0].s;
+  a.EI1 = 1.4301681874010745; a.EI2 = 0.032314908969444736; a.EA1 = 40.76684724506974;
+  a.EA2 = std::numeric_limits<double>::infinity(); a.l2 = 0.5731138661387654;
+  a.alpha1 = 0.5618300717372706; a.alpha2 = 0.08699714294030288;
+  cases[0].Ft = -3.0304329245084243;
+  auto& b = cases[1].s;
+  b.EI1 = 0.24379965990258304; b.EI2 = 0.0005908679208255608; b.EA1 = 7488.986232524523;
+  b.EA2 = 73.37722871831461; b.l2 = 0.0035852422537697433; b.alpha1 = 1.2764318006969122;
+  b.alpha2 = 0.0957784983372869;
+  cases[1].Ft = -8.30703586640874;
+  const int expected_spatula[2] = {2, 0}, expected_beam[2] = {0, 2};
+  for (int k = 0; k < 2; ++k) {
+    const auto& c = cases[static_cast<std::size_t>(k)];
+    const auto st = gecko::critical_line_at(c.s, std::vector<double>{c.Ft})[0];
+    INFO("case " << k << " Fn " << st.Fn);
+    REQUIRE(st.status == gecko::critical_status::converged);
+    const long double err = seta_test::fn_error(c.s, st.Fn, c.Ft);
+    CHECK(std::fabs(static_cast<double>(err)) <= 1e-11 * std::max(1.0, std::fabs(st.Fn)));
+    // The independent count: sign changes of theta' along the RK4 shot.
+    const auto shot = seta_test::shoot(c.s, st.Fn, c.Ft, 60000);
+    CHECK(shot.sign_changes_spatula == expected_spatula[k]);
+    CHECK(shot.sign_changes_beam == expected_beam[k]);
+    CHECK(st.turning_points_spatula == shot.sign_changes_spatula);
+    CHECK(st.turning_points_beam == shot.sign_changes_beam);
   }
 }

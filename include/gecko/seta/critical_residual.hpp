@@ -192,12 +192,13 @@ inline bool seta_plan_valid(const seta_params<T>& d, const seta_plan& plan, T Fn
          segment_plan_valid(g.spatula, plan.spatula, g.psi_s2, g.X3_s2, g.psi_e2, g.X3_e2, u14[1], g.h2);
 }
 
-template <bool E1, bool E2, class T>
+template <class Policy, bool E1, bool E2, class T>
 inline void seta_turning_points(const seta_params<T>& d, const seta_plan& plan, T Fn, T beta, T p, T q, T Ft,
                                 T edge, int& beam, int& spatula) {
-  const auto g = make_seta_geometry<E1, E2>(d, Fn, beta, p, q, Ft, edge, false);
-  beam = segment_turning_points(plan.beam, g.X3_s1, g.X3_e1, g.h1);
-  spatula = segment_turning_points(plan.spatula, g.X3_s2, g.X3_e2, g.h2);
+  const bool angles = plan.beam.periods != 0 || plan.spatula.periods != 0;  // see segment_turning_points
+  const auto g = make_seta_geometry<E1, E2>(d, Fn, beta, p, q, Ft, edge, angles);
+  beam = segment_turning_points<Policy>(g.beam, plan.beam, g.psi_s1, g.X3_s1, g.psi_e1, g.X3_e1, g.h1);
+  spatula = segment_turning_points<Policy>(g.spatula, plan.spatula, g.psi_s2, g.X3_s2, g.psi_e2, g.X3_e2, g.h2);
 }
 
 }  // namespace detail

@@ -453,15 +453,29 @@ inline segment_plan plan_segment(const segment_constants<T, E>& g, T psi_s, T X3
 }
 
 // Turning points inside a segment at a state measured with `plan` (the plan's own count is that
-// of the state it was made for; a plan stays valid while an end's rate changes sign): opposite
-// end signs give one, equal signs with theta moving against them two.
-template <class T>
-inline int segment_turning_points(const segment_plan& plan, T X3s, T X3e, T h) {
+// of the state it was made for; a plan stays valid while an end's rate changes sign). On a path
+// shorter than a full libration (4K) the end signs decide: opposite signs give one, equal signs
+// with theta moving against them two. A libration plan that added a period (made where the end
+// phase te was behind the start phase ts) stays valid when the Newton iterates carry te past ts:
+// the path is then te - ts + 4K, a full period more, and passes both turning points of that
+// period. The stress campaign found such states (bench/results/stress.md: a spatula and a beam
+// whose ends lie 0.001-0.002 rad apart on a path of one period; the end signs alone said 0, the
+// ODE 2), so there the phases decide. psi_s, psi_e are only read for such plans.
+template <class Policy, class T, bool E>
+inline int segment_turning_points(const segment_constants<T, E>& g, const segment_plan& plan, T psi_s, T X3s,
+                                  T psi_e, T X3e, T h) {
   if (!plan.direct && !plan.libration) return 0;  // rotation: theta' keeps its sign
   const bool ps = X3s >= 0, pe = X3e >= 0;
-  // Every path here is shorter than a full libration (4K), so the signs decide: a period added
-  // by a phase plan only unwraps the phase difference.
-  return ps != pe ? 1 : ((ps ? h > 0 : h < 0) ? 0 : 2);
+  const int within_period = ps != pe ? 1 : ((ps ? h > 0 : h < 0) ? 0 : 2);
+  if (plan.direct || plan.periods == 0) return within_period;
+  using std::asin;
+  const T two_pi = 2 * seta_pi<T>();
+  const T a = asin(g.up);
+  const T X4top = seg_sqrt_f4(g, g.up);
+  const T K = quarter_libration<Policy>(g, X4top);
+  const T ts = libration_phase<Policy>(g, a, X4top, K, plan.rep_s, psi_s - phase_shift(plan.rep_s, psi_s) * two_pi, X3s);
+  const T te = libration_phase<Policy>(g, a, X4top, K, plan.rep_e, psi_e - phase_shift(plan.rep_e, psi_e) * two_pi, X3e);
+  return te > ts ? within_period + 2 * plan.periods : within_period;
 }
 
 // Is a plan still right at a (converged) state? u14: the direct form's U14 there.

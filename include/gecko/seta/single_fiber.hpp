@@ -189,7 +189,11 @@ struct fiber_system {
     const auto g = make_segment<E>(EI, c, Ft + w, N);
     const T u0 = sa * (Ft / N) - ca * (z[0] / N);
     const T X3s = z[1] / seg_sqrt_f4(g, u0);
-    beam = segment_turning_points(p, X3s, edge, (seta_pi<T>() / 2 - alpha) / 2);
+    // psi at both ends (read only for a libration plan that added a period)
+    using std::atan2;
+    const T phi = p.periods != 0 ? atan2(z[0], Ft) : T(0);
+    beam = segment_turning_points<Policy>(g, p, alpha - phi, X3s, seta_pi<T>() / 2 - phi, edge,
+                                          (seta_pi<T>() / 2 - alpha) / 2);
     spatula = 0;
   }
 };

@@ -198,7 +198,7 @@ struct seta_system {
   void turning_points(const plan_type& p, const vec& z, T mu, int& beam, int& spatula) const {
     T Ft, edge;
     forces(mu, Ft, edge);
-    seta_turning_points<E1, E2>(d, p, z[0], z[1], z[2], z[3], Ft, edge, beam, spatula);
+    seta_turning_points<Policy, E1, E2>(d, p, z[0], z[1], z[2], z[3], Ft, edge, beam, spatula);
   }
 };
 
