@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """High-precision check of the campaign states where the double-precision verifier disagrees with
-gecko in beta but not in Fn (bench/results/stress.md, "beta investigation").
+gecko in beta but not in Fn (bench/results/stress.md, "beta investigation"), or (--by fn) of the
+states with the largest verified Fn differences.
 
 Route (no gecko code, no double-precision step): the same backward shooting as verify.py (models.md
 §1: from the contact edge theta2 = pi/2, theta2' = +sqrt(2 (w - Ft^2/(2 EA2))/EI2), across the
@@ -12,7 +13,7 @@ Reported per state: gecko's errors |Fn - Fn*|/max(1,|Fn*|) and |beta - beta*|, t
 verifier's dbeta, and the condition number dbeta_shot/dFn of the tip-to-joint map that the
 verifier uses (the amplification that makes its beta inconclusive).
 
-    python3 bench/stress/beta_conditioning.py bench/stress/stress_2000.npz [--top 6]
+    python3 bench/stress/beta_conditioning.py bench/stress/stress_2000.npz [--top 6] [--by fn] [--json out.json]
 """
 from __future__ import annotations
 
@@ -131,6 +132,10 @@ def main(argv=None):
     ap.add_argument("npz")
     ap.add_argument("--top", type=int, default=6)
     ap.add_argument("--json", default=None)
+    ap.add_argument("--by", choices=("beta", "fn", "flagged"), default="beta",
+                    help="beta: states confirmed in Fn with |dbeta| > 1e-8 (default); fn: the largest verified"
+                         " |dFn|/max(1,|Fn|), to tell gecko's own error from the verifier's; flagged: every state"
+                         " the double verifier flags as silently wrong (campaign.classify)")
     args = ap.parse_args(argv)
     mp.mp.dps = DPS
     import campaign
@@ -140,8 +145,19 @@ def main(argv=None):
     rel = np.abs(z["v_dFn"]) / scale
     dbeta = np.abs(z["v_dbeta"])
     conc_fn = (z["v_fn_uncert"] / scale < 1e-9) & np.isfinite(rel)
-    cand = (status == 0) & conc_fn & (dbeta > 1e-8)
-    order = np.argsort(np.where(cand, dbeta, -1).ravel())[::-1][: args.top]
+    if args.by == "beta":
+        cand = (status == 0) & conc_fn & (dbeta > 1e-8)
+        key = dbeta
+    elif args.by == "flagged":
+        v = {k[2:]: z[k] for k in z.files if k.startswith("v_")}
+        cl = campaign.classify(P, FT, Fn, beta, status, v)
+        cand = cl["wrong_fn"] | cl["wrong_beta"]
+        key = np.maximum(rel, dbeta)
+        args.top = max(args.top, int(cand.sum()))
+    else:
+        cand = (status == 0) & conc_fn & (rel > 1e-12)
+        key = rel
+    order = np.argsort(np.where(cand, key, -1).ravel())[::-1][: args.top]
     rows = []
     for k in order:
         i, j = np.unravel_index(k, status.shape)

@@ -3,9 +3,16 @@
 check the batch call for 1 vs 2 threads, and write bench/results/stress.{md,json}.
 
     python3 bench/stress/report.py bench/stress/stress_10000.npz [--beta bench/results/stress_beta.json]
+        [--fn-check bench/results/stress_fn.json] [--flagged-check bench/results/stress_flagged.json]
+        [--recheck bench/results/stress_recheck.json]
 
 --beta: the 60-digit check of the states whose beta the double verifier cannot confirm
 (bench/stress/beta_conditioning.py --json ...), summarised in the report.
+--fn-check: the same 60-digit check of the states with the largest verified Fn differences
+(beta_conditioning.py --by fn --json ...): whose error they are, gecko's or the verifier's.
+--flagged-check: the 60-digit check of every state the double verifier flags as silently wrong
+(beta_conditioning.py --by flagged --json ...); a flag stands unless the 60-digit root clears it.
+--recheck: a later solver re-run on the campaign's states (bench/stress/recheck.py --json ...).
 """
 import json
 import os
@@ -36,7 +43,7 @@ def threads_check(P, n=None):
     return dict(designs=int(sub.shape[0]), ft=ft.tolist(), bitwise_identical=bool(same), t1_s=t1, t2_s=t2)
 
 
-def main(path, beta_json=None):
+def main(path, beta_json=None, fn_json=None, flagged_json=None, recheck_json=None):
     z = np.load(path)
     P, FT, Fn, beta, status, secs = z["P"], z["FT"], z["Fn"], z["beta"], z["status"], z["secs"]
     t = time.time()
@@ -85,12 +92,20 @@ def main(path, beta_json=None):
                   status=int(status[i, j]), Fn_verifier=float(v["fn_root"][i, j]) if "fn_root" in v else None,
                   rel_dFn=float(rel[i, j]), dbeta=float(v["dbeta"][i, j]))
              for i, j in zip(*wrong_idx)]
+    # A flag of the double verifier stands unless the 60-digit shooting clears it (gecko within
+    # 1e-8 of the 60-digit root in Fn, relative, and in beta).
+    flagged_hp = json.load(open(flagged_json)) if flagged_json else []
+    cleared = [r for r in flagged_hp if r["gecko_rel_dFn"] <= campaign.WRONG_REL and r["gecko_dbeta"] <= campaign.WRONG_REL]
     tpagree = ok & conc & (v["turns_beam"] >= 0)
     out = dict(
         designs=int(P.shape[0]), designs_planned=int(designs_planned(path, z)), states=int(status.size), histogram=hist,
         solved_percent=float(100 * ok.mean()), verified_conclusive=int(conc.sum()),
         inconclusive_fn=int(cl["inconclusive_fn"].sum()), inconclusive_beta=int(cl["inconclusive_beta"].sum()),
         silently_wrong_fn=int(cl["wrong_fn"].sum()), silently_wrong_beta=int(cl["wrong_beta"].sum()),
+        flagged_checked_60_digits=len(flagged_hp) if flagged_json else None,
+        flagged_cleared_60_digits=len(cleared) if flagged_json else None,
+        silently_wrong_after_60_digits=(len(wrong) - len(cleared)) if flagged_json else None,
+        flagged_high_precision=flagged_hp or None,
         nonfinite_with_status0=int(cl["nonfinite_ok"].sum()), number_with_status_nonzero=int(cl["number_with_status"].sum()),
         turning_point_share=float(tp.sum() / max(1, ok.sum())),
         turning_point_count_agreement=float(np.mean((v["turns_beam"] == z["tpb"])[tpagree] & (v["turns_spatula"] == z["tps"])[tpagree])),
@@ -104,10 +119,13 @@ def main(path, beta_json=None):
         design_seconds_percentiles={str(q): float(np.percentile(secs, q)) for q in (50, 90, 99, 99.9, 100)},
         worst_dbeta=worst_dbeta(P, FT, Fn, beta, status, v, cl, scale),
         beta_high_precision=json.load(open(beta_json)) if beta_json else None,
+        fn_high_precision=json.load(open(fn_json)) if fn_json else None,
+        recheck=json.load(open(recheck_json)) if recheck_json else None,
     )
     with open(os.path.join(RESULTS, "stress.json"), "w") as f:
         json.dump(out, f, indent=1)
-    print(json.dumps({k: v for k, v in out.items() if k not in ("worst", "wrong", "timeout_examples", "worst_dbeta", "beta_high_precision")}, indent=1))
+    print(json.dumps({k: v for k, v in out.items() if k not in ("worst", "wrong", "timeout_examples", "worst_dbeta", "beta_high_precision",
+                                                              "fn_high_precision", "flagged_high_precision", "recheck")}, indent=1))
     write_md(out, path)
     return out
 
@@ -145,8 +163,14 @@ def write_md(o, path):
          f"- designs: {o['designs']}" + (f" (a partial campaign: {o['designs']} of {o['designs_planned']} planned designs finished)"
                                          if o['designs'] < o['designs_planned'] else "") + f", states (design x Ft): {o['states']}",
          f"- solved (status 0): {o['solved_percent']:.2f} %",
-         f"- **silently wrong** (status 0, verifier conclusive, |dFn| > 1e-8 max(1,|Fn|)): **{o['silently_wrong_fn']}**;"
-         f" beta off by > 1e-8: **{o['silently_wrong_beta']}**",
+         (f"- flagged by the double verifier (status 0, verifier conclusive, |dFn| > 1e-8 max(1,|Fn|)): {o['silently_wrong_fn']};"
+          f" beta off by > 1e-8: {o['silently_wrong_beta']}" if o.get("flagged_checked_60_digits") is not None else
+          f"- **silently wrong** (status 0, verifier conclusive, |dFn| > 1e-8 max(1,|Fn|)): **{o['silently_wrong_fn']}**;"
+          f" beta off by > 1e-8: **{o['silently_wrong_beta']}**"),
+         *([f"- of those, checked by the 60-digit shooting: {o['flagged_checked_60_digits']}; cleared"
+            f" (gecko within 1e-8 of its root in Fn and beta): {o['flagged_cleared_60_digits']};"
+            f" **silently wrong after that check: {o['silently_wrong_after_60_digits']}** (table below)"]
+           if o.get("flagged_checked_60_digits") is not None else []),
          f"- status 0 with NaN: {o['nonfinite_with_status0']}; status != 0 with a number: {o['number_with_status_nonzero']}",
          f"- verified conclusively: {o['verified_conclusive']} states; verifier inconclusive in Fn (own uncertainty"
          f" > 1e-9 relative): {o['inconclusive_fn']}; in beta: {o['inconclusive_beta']}",
@@ -161,6 +185,13 @@ def write_md(o, path):
          "## Status histogram", "", "| status | meaning | states |", "|---|---|---|"]
     for k, c in sorted(o["histogram"].items()):
         L.append(f"| {k} | {names.get(k, '?')} | {c} |")
+    if o.get("recheck"):
+        r = o["recheck"]
+        L += ["", "## The campaign's states with the current solver (bench/stress/recheck.py)", "",
+              f"Fn bitwise equal: **{r['Fn_bitwise_equal']}**; beta bitwise equal: **{r['beta_bitwise_equal']}**;"
+              f" statuses equal: **{r['status_equal']}** ({r['states']} states). Turning-point counts changed in"
+              f" {r['turning_counts_changed']} solved states and now agree with the verifier in"
+              f" {r['turning_counts_agree']} of {r['turning_counts_checked']}."]
     t = o["threads"]
     L += ["", "## 1 vs 2 threads (batch call)", "",
           f"`critical_line_batch` on the first {t['designs']} designs at Ft = {t['ft']}: bitwise identical"
@@ -191,6 +222,24 @@ def write_md(o, path):
             L.append(f"| {', '.join(f'{x:.6g}' for x in r['design'])} | {r['Ft']:.6g} | {r['gecko_rel_dFn']:.1e} |"
                      f" {r['gecko_dbeta']:.1e} | {r['verifier_rel_dFn']:.1e} | {r['verifier_dbeta']:.1e} |"
                      f" {r['dbeta_dFn_tip_shot']:.2e} |")
+    if o.get("flagged_high_precision"):
+        L += ["", "## States flagged by the double verifier, checked at 60 digits", "",
+              "Every state the double-precision verifier flags (status 0, |dFn| or |dbeta| > 1e-8 where it",
+              "calls itself conclusive), solved by the 60-digit Taylor shooting (beta_conditioning.py --by flagged).", "",
+              "| design | Ft | Fn | gecko rel dFn | gecko dbeta | verifier rel dFn | verifier dbeta | dbeta/dFn (tip shot) |",
+              "|---|---|---|---|---|---|---|---|"]
+        for r in o["flagged_high_precision"]:
+            L.append(f"| {', '.join(f'{x:.6g}' for x in r['design'])} | {r['Ft']:.6g} | {r['Fn']:.8g} |"
+                     f" {r['gecko_rel_dFn']:.1e} | {r['gecko_dbeta']:.1e} | {r['verifier_rel_dFn']:.1e} |"
+                     f" {r['verifier_dbeta']:.1e} | {r['dbeta_dFn_tip_shot']:.2e} |")
+    if o.get("fn_high_precision"):
+        L += ["", "## Largest Fn differences, checked at 60 digits", "",
+              "The states with the largest verified |dFn| (beta_conditioning.py --by fn): gecko's error",
+              "against the 60-digit root Fn*, beside the double verifier's difference.", "",
+              "| design | Ft | Fn | gecko rel dFn (60 digits) | verifier rel dFn |", "|---|---|---|---|---|"]
+        for r in o["fn_high_precision"]:
+            L.append(f"| {', '.join(f'{x:.6g}' for x in r['design'])} | {r['Ft']:.6g} | {r['Fn']:.8g} |"
+                     f" {r['gecko_rel_dFn']:.2e} | {r['verifier_rel_dFn']:.2e} |")
     q = o["design_seconds_percentiles"]
     L += ["", "## Run time per design (wall clock, incl. the worker round trip; shared busy machine)", "",
           "percentiles 50/90/99/99.9/100: " + ", ".join(f"{q[k]:.3g} s" for k in q)]
@@ -198,8 +247,18 @@ def write_md(o, path):
     L += ["", "## Command", "", "```",
           "python3 bench/stress/campaign.py --designs 10000 --workers 2 --timeout 30 --out bench/stress/stress_10000.npz",
           "# (resumable: the same command keeps the finished chunks in bench/stress/stress_10000_chunks/)",
+          *([f"python3 bench/stress/beta_conditioning.py {os.path.relpath(path, os.path.join(HERE, '..', '..'))}"
+             f" --by {by} --json bench/results/stress_{by}.json"
+             for by, key in (("flagged", "flagged_checked_60_digits"), ("fn", "fn_high_precision"),
+                             ("beta", "beta_high_precision")) if o.get(key) is not None]),
+          *([f"python3 bench/stress/recheck.py {os.path.relpath(path, os.path.join(HERE, '..', '..'))}"
+             " --json bench/results/stress_recheck.json"] if o.get("recheck") else []),
           f"python3 bench/stress/report.py {os.path.relpath(path, os.path.join(HERE, '..', '..'))}"
-          + (" --beta bench/results/stress_beta.json" if o.get("beta_high_precision") else ""), "```"]
+          + (" --beta bench/results/stress_beta.json" if o.get("beta_high_precision") else "")
+          + (" --fn-check bench/results/stress_fn.json" if o.get("fn_high_precision") else "")
+          + (" --flagged-check bench/results/stress_flagged.json" if o.get("flagged_checked_60_digits") is not None else "")
+          + (" --recheck bench/results/stress_recheck.json" if o.get("recheck") else ""),
+          "```"]
     with open(os.path.join(RESULTS, "stress.md"), "w") as f:
         f.write("\n".join(L) + "\n")
 
@@ -207,4 +266,7 @@ def write_md(o, path):
 if __name__ == "__main__":
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
     beta = sys.argv[sys.argv.index("--beta") + 1] if "--beta" in sys.argv else None
-    main(args[0], beta)
+    fn_check = sys.argv[sys.argv.index("--fn-check") + 1] if "--fn-check" in sys.argv else None
+    flagged = sys.argv[sys.argv.index("--flagged-check") + 1] if "--flagged-check" in sys.argv else None
+    recheck = sys.argv[sys.argv.index("--recheck") + 1] if "--recheck" in sys.argv else None
+    main(args[0], beta, fn_check, flagged, recheck)
