@@ -6,7 +6,9 @@ that then converge with the independent verifier (verify.py).
 Newton at a fixed Ft accepts a state when its scaled step falls below the tolerance (1e-12 by
 default); where the step's rounding floor lies above that (ill-conditioned Jacobians at large
 forces) the damped iteration stalls and the state is reported as status 1 with NaN. This measures
-how many of them converge at the looser tolerance and how far those are from the verifier's root.
+how many of them converge at the looser tolerance and how far those are from the verifier's root,
+and how many belong to designs whose natural state at Ft = 0 was not found at all (then every Ft of
+the design is status 1).
 
     python3 bench/stress/status1_floor.py bench/stress/stress_10000.npz [--tolerance 1e-10] [--json out.json]
 """
@@ -47,6 +49,13 @@ def main(argv=None):
         Fn[i, m] = L.Fn[m]
         beta[i, m] = L.theta_joint[m]
     t_solve = time.time() - t0
+    # Which status-1 states belong to designs whose natural state at Ft = 0 was not found (the
+    # homotopy of critical_line.hpp gave up: the traced line is empty, every Ft gets status 1)?
+    no_natural = np.zeros(status.shape, dtype=bool)
+    for i in rows:
+        s = gecko.TwoLevelSeta(**dict(zip(campaign.FIELDS, P[i])))
+        if len(s.critical_line(ft_end=0.0).Ft) == 0:
+            no_natural[i] = status[i] == 1
     ok = st == 0
     t0 = time.time()
     v = campaign.verify_states(P, FT, Fn, beta, np.where(ok, 0, 1))
@@ -57,6 +66,8 @@ def main(argv=None):
     force = np.hypot(Fn, FT)
     out = dict(
         campaign=os.path.relpath(args.npz), tolerance=args.tolerance, status1_states=int((status == 1).sum()),
+        status1_designs=int(rows.size), no_natural_state_designs=int(no_natural.any(axis=1).sum()),
+        no_natural_state_states=int(no_natural.sum()),
         converged_at_tolerance=int(ok.sum()),
         still_status={int(k): int(c) for k, c in zip(*np.unique(st[status == 1], return_counts=True))},
         verified_conclusive=int(conc.sum()), beyond_1e_8=int(cl["wrong_fn"].sum()),
