@@ -189,6 +189,15 @@ def run_chunk(P, FT, timeout):
                 t_gecko=np.float64(t_gecko), t_ver=np.float64(t_ver), **{"v_" + k: x for k, x in v.items()})
 
 
+def print_json(out, path=None):
+    """Print a result dict, and write it to path (JSON) when given (the study scripts' output)."""
+    print(json.dumps(out, indent=1))
+    if path:
+        with open(path, "w") as f:
+            json.dump(out, f, indent=1)
+    return out
+
+
 def chunk_path(outdir, k):
     return os.path.join(outdir, f"chunk_{k:05d}.npz")
 

@@ -9,7 +9,6 @@ campaign's numbers, without re-running the verifier (~1.5 CPU-h for 10,000 desig
 from __future__ import annotations
 
 import argparse
-import json
 import multiprocessing as mp
 import os
 import sys
@@ -62,11 +61,7 @@ def main(argv=None):
                turning_counts_changed=int(((tpb != z["tpb"]) | (tps != z["tps"]))[ok].sum()),
                turning_counts_checked=int(checked.sum()), turning_counts_agree=int(agree.sum()),
                seconds=round(time.time() - t0, 1))
-    print(json.dumps(out, indent=1))
-    if args.json:
-        with open(args.json, "w") as f:
-            json.dump(out, f, indent=1)
-    return out
+    return campaign.print_json(out, args.json)
 
 
 if __name__ == "__main__":

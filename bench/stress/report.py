@@ -153,6 +153,18 @@ def worst_dbeta(P, FT, Fn, beta, status, v, cl, scale, k=5):
     return out
 
 
+def high_precision_table(rows):
+    """Markdown rows of beta_conditioning.py results: gecko and the double verifier against the
+    60-digit root."""
+    out = ["| design | Ft | Fn | gecko rel dFn | gecko dbeta | verifier rel dFn | verifier dbeta | dbeta/dFn (tip shot) |",
+           "|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        out.append(f"| {', '.join(f'{x:.6g}' for x in r['design'])} | {r['Ft']:.6g} | {r['Fn']:.8g} |"
+                   f" {r['gecko_rel_dFn']:.1e} | {r['gecko_dbeta']:.1e} | {r['verifier_rel_dFn']:.1e} |"
+                   f" {r['verifier_dbeta']:.1e} | {r['dbeta_dFn_tip_shot']:.2e} |")
+    return out
+
+
 def write_md(o, path):
     names = {-1: "timeout (no answer within the per-design limit)", 0: "converged", 1: "not converged",
              2: "no critical state", 3: "unsupported state", 4: "singular (at a fold)", 5: "invalid input",
@@ -216,30 +228,17 @@ def write_md(o, path):
         L += ["", "60-digit check (bench/stress/beta_conditioning.py: Taylor-series shooting of order 40 in mpmath,",
               "root Fn* to 1e-30): gecko's errors against it, beside the double verifier's differences and the",
               "condition number dbeta/dFn of the tip-to-joint shot.", "",
-              "| design | Ft | gecko rel dFn | gecko dbeta | verifier rel dFn | verifier dbeta | dbeta/dFn (tip shot) |",
-              "|---|---|---|---|---|---|---|"]
-        for r in o["beta_high_precision"]:
-            L.append(f"| {', '.join(f'{x:.6g}' for x in r['design'])} | {r['Ft']:.6g} | {r['gecko_rel_dFn']:.1e} |"
-                     f" {r['gecko_dbeta']:.1e} | {r['verifier_rel_dFn']:.1e} | {r['verifier_dbeta']:.1e} |"
-                     f" {r['dbeta_dFn_tip_shot']:.2e} |")
+              *high_precision_table(o["beta_high_precision"])]
     if o.get("flagged_high_precision"):
         L += ["", "## States flagged by the double verifier, checked at 60 digits", "",
               "Every state the double-precision verifier flags (status 0, |dFn| or |dbeta| > 1e-8 where it",
               "calls itself conclusive), solved by the 60-digit Taylor shooting (beta_conditioning.py --by flagged).", "",
-              "| design | Ft | Fn | gecko rel dFn | gecko dbeta | verifier rel dFn | verifier dbeta | dbeta/dFn (tip shot) |",
-              "|---|---|---|---|---|---|---|---|"]
-        for r in o["flagged_high_precision"]:
-            L.append(f"| {', '.join(f'{x:.6g}' for x in r['design'])} | {r['Ft']:.6g} | {r['Fn']:.8g} |"
-                     f" {r['gecko_rel_dFn']:.1e} | {r['gecko_dbeta']:.1e} | {r['verifier_rel_dFn']:.1e} |"
-                     f" {r['verifier_dbeta']:.1e} | {r['dbeta_dFn_tip_shot']:.2e} |")
+              *high_precision_table(o["flagged_high_precision"])]
     if o.get("fn_high_precision"):
         L += ["", "## Largest Fn differences, checked at 60 digits", "",
               "The states with the largest verified |dFn| (beta_conditioning.py --by fn): gecko's error",
               "against the 60-digit root Fn*, beside the double verifier's difference.", "",
-              "| design | Ft | Fn | gecko rel dFn (60 digits) | verifier rel dFn |", "|---|---|---|---|---|"]
-        for r in o["fn_high_precision"]:
-            L.append(f"| {', '.join(f'{x:.6g}' for x in r['design'])} | {r['Ft']:.6g} | {r['Fn']:.8g} |"
-                     f" {r['gecko_rel_dFn']:.2e} | {r['verifier_rel_dFn']:.2e} |")
+              *high_precision_table(o["fn_high_precision"])]
     q = o["design_seconds_percentiles"]
     L += ["", "## Run time per design (wall clock, incl. the worker round trip; shared busy machine)", "",
           "percentiles 50/90/99/99.9/100: " + ", ".join(f"{q[k]:.3g} s" for k in q)]

@@ -15,7 +15,6 @@ the design is status 1).
 from __future__ import annotations
 
 import argparse
-import json
 import os
 import sys
 import time
@@ -75,11 +74,7 @@ def main(argv=None):
         median_rel_dFn=float(np.nanmedian(rel[conc])) if conc.any() else None,
         force_percentiles={str(q): float(np.nanpercentile(force[ok], q)) for q in (10, 50, 90)} if ok.any() else None,
         seconds_solve=round(t_solve, 1), seconds_verify=round(t_ver, 1))
-    print(json.dumps(out, indent=1))
-    if args.json:
-        with open(args.json, "w") as f:
-            json.dump(out, f, indent=1)
-    return out
+    return campaign.print_json(out, args.json)
 
 
 if __name__ == "__main__":

@@ -13,13 +13,15 @@ double, is ~1e-8 instead of 0 (an Ft an ulp below (Ft)max moves Fn by ~1e-7: the
 conditioning, tests/seta/near_singular.cpp). gecko maps such Ft to the end itself; its end states
 are checked against mpmath in tests/seta/line_end.cpp.
 
-    python3 bench/stress/traced_nodes.py --designs 400 --seed 5 --per-line 8 [--json out.json]
+    python3 bench/stress/traced_nodes.py --designs 400 --seed 5 --per-line 8 [--hp 2] [--json out.json]
+
+--hp N: the N nodes where the raw continuation node (resolve_nodes=False) differs most from the
+re-solved one, both checked against the 60-digit Taylor shooting (beta_conditioning.py).
 """
 from __future__ import annotations
 
 import argparse
 import collections
-import json
 import os
 import sys
 import time
@@ -36,6 +38,7 @@ def main(argv=None):
     ap.add_argument("--designs", type=int, default=400)
     ap.add_argument("--seed", type=int, default=5)
     ap.add_argument("--per-line", type=int, default=8, help="status-0 nodes verified per line (random)")
+    ap.add_argument("--hp", type=int, default=0, help="60-digit check of the N largest raw-vs-re-solved differences")
     ap.add_argument("--json", default=None)
     args = ap.parse_args(argv)
     import gecko
@@ -83,11 +86,36 @@ def main(argv=None):
         worst_state=dict(design=P[rows[worst]].tolist(), Ft=float(FT[worst, 0]), Fn=float(FN[worst, 0]))
         if worst is not None else None,
         seconds_trace=round(t_trace, 2), seconds_verify=round(t_ver, 1))
-    print(json.dumps(out, indent=1))
-    if args.json:
-        with open(args.json, "w") as f:
-            json.dump(out, f, indent=1)
-    return out
+    if args.hp:
+        out["raw_vs_resolved_60_digits"] = raw_vs_resolved(P, lines, args.hp)
+    return campaign.print_json(out, args.json)
+
+
+def raw_vs_resolved(P, lines, top):
+    """The largest |raw - re-solved| Fn differences (same node, same Ft), both against 60 digits."""
+    import gecko
+    import mpmath as mp
+    import beta_conditioning as bc
+    mp.mp.dps = bc.DPS
+    cand = []
+    for i, L in enumerate(lines):
+        R = gecko.TwoLevelSeta(**dict(zip(campaign.FIELDS, P[i]))).critical_line(resolve_nodes=False)
+        same = (L.status == 0) & (R.Ft == L.Ft)
+        if not same.any():
+            continue
+        d = np.where(same, np.abs(R.Fn - L.Fn) / np.maximum(1.0, np.abs(L.Fn)), -1.0)
+        k = int(np.argmax(d))
+        cand.append((float(d[k]), i, k, float(R.Fn[k])))
+    rows = []
+    for diff, i, k, raw in sorted(cand, reverse=True)[:top]:
+        L = lines[i]
+        d = dict(zip(campaign.FIELDS, map(float, P[i])))
+        fs = bc.root(d, float(L.Ft[k]), float(L.Fn[k]))[0]
+        scale = max(1.0, abs(float(fs)))
+        rows.append(dict(design=P[i].tolist(), Ft=float(L.Ft[k]), Fn_resolved=float(L.Fn[k]), Fn_raw=raw,
+                         raw_vs_resolved=diff, raw_rel_err_60_digits=float(abs(raw - fs) / scale),
+                         resolved_rel_err_60_digits=float(abs(float(L.Fn[k]) - fs) / scale)))
+    return rows
 
 
 if __name__ == "__main__":

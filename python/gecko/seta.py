@@ -151,7 +151,7 @@ class TwoLevelSeta:
         return math.sqrt(2 * self.EA2 * self.w)
 
     def critical_line(self, Ft=None, *, errors: str = "raise", tolerance: Optional[float] = None,
-                      ft_end: Optional[float] = None) -> CriticalLine:
+                      ft_end: Optional[float] = None, resolve_nodes: bool = True) -> CriticalLine:
         """The critical line of adhesion.
 
         With ``Ft`` (any shape): the state at each Ft, on the line followed from Ft = 0 (the first
@@ -159,11 +159,12 @@ class TwoLevelSeta:
         ``tolerance`` (default 1e-12, scaled step). Without ``Ft``: the nodes of the continuation from
         Ft = 0 to ``ft_end`` (default (Ft)max, or 3 sqrt(EI1 w)/l1 for EA2 = inf), through folds,
         with ``folds`` and ``end`` (why the line stopped); each node re-solved to the state tolerance
-        (``status`` 0) or marked (1).
+        (``status`` 0) or marked (1). ``resolve_nodes=False`` returns the continuation's raw nodes
+        (status 1, accurate to its 1e-10 step test; faster, for drawing only).
         """
         params = self._params()
         if Ft is None:
-            d = _core.seta_critical_line(params, math.nan if ft_end is None else float(ft_end))
+            d = _core.seta_critical_line(params, math.nan if ft_end is None else float(ft_end), bool(resolve_nodes))
             n = len(d["Ft"])
             return CriticalLine(Ft=d["Ft"], Fn=d["Fn"], theta_joint=d["theta_joint"],
                                 status=d["status"], iterations=np.zeros(n, dtype=np.int32),

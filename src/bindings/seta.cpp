@@ -112,12 +112,14 @@ void bind_seta(py::module_& m) {
     return cols.as_dict();
   }, py::arg("params"), py::arg("Ft"), py::arg("errors") = 0, py::arg("tolerance") = std::nan(""));
 
-  m.def("seta_critical_line", [](const darray& params, double ft_end) {
+  m.def("seta_critical_line", [](const darray& params, double ft_end, bool resolve_nodes) {
     const auto s = design_from(params);
     critical_line_result<double> r;
     {
       py::gil_scoped_release release;
-      r = critical_line(s, line_options(ft_end, std::nan("")));
+      auto options = line_options(ft_end, std::nan(""));
+      options.resolve_nodes = resolve_nodes;
+      r = critical_line(s, options);
     }
     const auto n = static_cast<py::ssize_t>(r.points.size());
     py::array_t<double> Ft(n), Fn(n), beta(n), rj(n), rb(n);
@@ -149,7 +151,8 @@ void bind_seta(py::module_& m) {
     d["natural_Fn"] = r.natural.Fn;
     d["natural_status"] = static_cast<int>(r.natural.status);
     return d;
-  }, py::arg("params"), py::arg("ft_end") = std::nan(""));
+  }, py::arg("params"), py::arg("ft_end") = std::nan(""),
+     py::arg("resolve_nodes") = true);
 
   m.def("seta_solve", [](const darray& params, double Ft, double Fn, double beta, double rate_joint,
                          double rate_base, double tolerance, int max_iterations) {

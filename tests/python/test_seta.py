@@ -114,6 +114,10 @@ def test_traced_nodes_carry_a_status():
     pick = np.arange(1, len(line.Ft), max(1, len(line.Ft) // 12))
     at = s.critical_line(Ft=line.Ft[pick])
     np.testing.assert_allclose(at.Fn, line.Fn[pick], rtol=1e-12, atol=1e-12)
+    raw = s.critical_line(resolve_nodes=False)   # the continuation's own nodes, marked as such
+    assert raw.status[0] == 0 and np.all(raw.status[1:] == 1)
+    np.testing.assert_array_equal(raw.Ft, line.Ft)
+    np.testing.assert_allclose(raw.Fn, line.Fn, rtol=1e-8, atol=1e-8)
     # A line at forces ~100 whose Newton steps at 1e-12 hit their rounding floor at some nodes
     # (bench/stress/traced_nodes.py): those nodes say so (status 1) and keep finite values.
     s = gecko.TwoLevelSeta(EI1=3.4819510836166394, EI2=15.497815605161746, EA1=15.40193091295868,
