@@ -67,6 +67,10 @@ def main(argv=None):
         campaign=os.path.relpath(args.npz), tolerance=args.tolerance, status1_states=int((status == 1).sum()),
         status1_designs=int(rows.size), no_natural_state_designs=int(no_natural.any(axis=1).sum()),
         no_natural_state_states=int(no_natural.sum()),
+        no_natural_state_design_medians={
+            name: float(np.median(col[no_natural.any(axis=1)]))
+            for name, col in (("EI2/EI1", P[:, 1] / P[:, 0]), ("EI1", P[:, 0]), ("l2", P[:, 5]), ("EA1", P[:, 2]))}
+        if no_natural.any() else None,
         converged_at_tolerance=int(ok.sum()),
         still_status={int(k): int(c) for k, c in zip(*np.unique(st[status == 1], return_counts=True))},
         verified_conclusive=int(conc.sum()), beyond_1e_8=int(cl["wrong_fn"].sum()),
