@@ -173,6 +173,9 @@ class TwoLevelSeta:
                                 turning_points_spatula=d["turning_points_spatula"],
                                 folds=list(d["folds"]), end=_LINE_END.get(d["end"], str(d["end"])),
                                 branch=d["branch"])
+        if not resolve_nodes:
+            raise ValueError("resolve_nodes=False applies to the traced line only (critical_line() without Ft); "
+                             "states at requested Ft are always solved to the tolerance")
         shape, flat = _flat(Ft)
         d = _core.seta_critical_line_at(params, flat, _error_code(errors),
                                         math.nan if tolerance is None else float(tolerance))

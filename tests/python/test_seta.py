@@ -118,6 +118,8 @@ def test_traced_nodes_carry_a_status():
     assert raw.status[0] == 0 and np.all(raw.status[1:] == 1)
     np.testing.assert_array_equal(raw.Ft, line.Ft)
     np.testing.assert_allclose(raw.Fn, line.Fn, rtol=1e-8, atol=1e-8)
+    with pytest.raises(ValueError, match="resolve_nodes"):
+        s.critical_line(Ft=[1.0], resolve_nodes=False)
     # A line at forces ~100 whose Newton steps at 1e-12 hit their rounding floor at some nodes
     # (bench/stress/traced_nodes.py): those nodes say so (status 1) and keep finite values.
     s = gecko.TwoLevelSeta(EI1=3.4819510836166394, EI2=15.497815605161746, EA1=15.40193091295868,

@@ -193,6 +193,17 @@ inline bool trace(const System& sys, T ft_stop, T scale, const critical_line_opt
   return true;
 }
 
+// Is node k the landed end of the line? That node was accepted by the landing's own checks (at
+// (Ft)max the Newton step has a rounding floor above a tight tolerance, see follow_line), so it is
+// a state even where a re-solve at the state tolerance fails. Only the landed end: an interior
+// node is a predictor-corrector point at the line tolerance, and a failed re-solve there must
+// stay a failure.
+template <class System>
+inline bool is_landed_end(const traced_line<System>& line, std::size_t k) {
+  return (line.end == line_end::reached_ft_max || line.end == line_end::reached_ft_end) &&
+         k + 1 == line.nodes.size();
+}
+
 // Evaluate a traced line at Ft values (first crossing along the line).
 template <class System, class T>
 inline void evaluate_line(const System& sys, const traced_line<System>& line, const T* Ft, std::size_t count,
@@ -279,16 +290,11 @@ inline void evaluate_line(const System& sys, const traced_line<System>& line, co
         const T span = (nodes[i + 1].z - nodes[i].z).template lpNorm<Eigen::Infinity>() + fabs(nodes[i + 1].Ft - nodes[i].Ft);
         if (gap > 2 * span + T(1e-8)) st = critical_status::not_converged;
       }
-      // The target is the landed end of the line (at (Ft)max the Newton's rounding floor is above
-      // a tight tolerance, see follow_line, and the end node was accepted by the landing's own
-      // checks): that node is the state. Only the landed end: an interior node is a predictor-
-      // corrector point at the line tolerance, and a failed re-solve there must stay a failure.
-      const bool landed = line.end == line_end::reached_ft_max || line.end == line_end::reached_ft_end;
-      const std::size_t last = nodes.size() - 1;
-      if (st != critical_status::converged && landed && ((a == 0 && i == last) || (b == 0 && i + 1 == last))) {
-        const std::size_t k = a == 0 ? i : i + 1;
-        z = nodes[k].z;
-        plan = line.plans[k];
+      // The target is exactly the landed end of the line: that node is the state. (The end is
+      // always the later node of a segment here, since i + 1 < nodes.size().)
+      if (st != critical_status::converged && b == 0 && is_landed_end(line, i + 1)) {
+        z = nodes[i + 1].z;
+        plan = line.plans[i + 1];
         st = critical_status::converged;
       }
       r = state_from(sys, z, Ft[idx], target, plan, st, its);
@@ -339,11 +345,7 @@ inline critical_status resolve_node(const System& sys, const traced_line<System>
       return critical_status::converged;
     }
   }
-  // The landed end of the line was accepted by the landing's own checks (at (Ft)max the Newton
-  // step has a rounding floor above a tight tolerance: see follow_line and evaluate_line).
-  const bool landed = line.end == line_end::reached_ft_max || line.end == line_end::reached_ft_end;
-  if (landed && i + 1 == line.nodes.size()) return critical_status::converged;
-  return critical_status::not_converged;
+  return is_landed_end(line, i) ? critical_status::converged : critical_status::not_converged;
 }
 
 template <class Policy, bool E1, bool E2, class T>
