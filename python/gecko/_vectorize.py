@@ -3,7 +3,25 @@ broadcasting. The compiled kernels take flat contiguous float64 arrays of equal 
 without the GIL); these helpers broadcast, flatten, and give the caller's shape back."""
 from __future__ import annotations
 
+import re
+
 import numpy as np
+
+_AT_ELEMENT = re.compile(r"\(at element (\d+)\)$")
+
+
+def with_index(error: ValueError, shape) -> ValueError:
+    """The compiled loops name a bad element by its flat index, "(at element 7)"; this names it by
+    its index in the caller's (broadcast) shape, "(at index (1, 3))", so the message points at the
+    element the caller wrote."""
+    msg = str(error)
+    m = _AT_ELEMENT.search(msg)
+    if not m or len(shape) < 1:
+        return error
+    flat = int(m.group(1))
+    idx = np.unravel_index(flat, shape)
+    where = f"(at index {tuple(int(i) for i in idx)})" if len(shape) > 1 else f"(at index {int(idx[0])})"
+    return ValueError(msg[:m.start()] + where)
 
 _ERRORS = {"raise": 0, "nan": 1}
 
@@ -32,4 +50,8 @@ def vectorised(kernel, *args, errors):
     """Calls ``kernel(*flat_arrays, code)`` like a numpy ufunc over the broadcast arguments."""
     code = error_code(errors)
     shape, flat = flat_args(args)
-    return shaped(kernel(*flat, code), shape)
+    try:
+        out = kernel(*flat, code)
+    except ValueError as e:
+        raise with_index(e, shape) from None
+    return shaped(out, shape)

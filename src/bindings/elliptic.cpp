@@ -1,42 +1,23 @@
 // Python bindings of gecko/elliptic: flat float64 arrays in, a float64 array out, the loop run
-// without the GIL. Broadcasting, scalars and the `errors=` keyword live in python/gecko/elliptic.py.
+// without the GIL on the one pool (vectorize.hpp). Broadcasting, scalars and the `errors=` keyword live in python/gecko/elliptic.py.
 #include <cstddef>
 #include <stdexcept>
 #include <tuple>
 #include <utility>
 
 #include "bindings.hpp"
+#include "vectorize.hpp"
 #include "gecko/elliptic.hpp"
 
 namespace gecko {
 namespace bindings {
 namespace {
 
-// Applies f elementwise to equal-length flat arrays. The output is allocated and the input
-// pointers taken while the GIL is held; only the arithmetic runs without it. A std::domain_error
-// thrown by f (errors="raise") leaves the scope normally, so the GIL is re-acquired before
-// pybind11 turns it into ValueError.
-template <class F, class... Arrays>
-py::array_t<double> map_elementwise(F f, const Arrays&... in) {
-  const py::ssize_t n = std::get<0>(std::forward_as_tuple(in...)).size();
-  if (((in.size() != n) || ...)) throw std::invalid_argument("gecko._core: array arguments must have equal length");
-  if (((in.ndim() != 1) || ...)) throw std::invalid_argument("gecko._core: array arguments must be one-dimensional");
-  py::array_t<double> out(n);
-  double* o = out.mutable_data();
-  const auto ptrs = std::make_tuple(in.data()...);
-  {
-    py::gil_scoped_release release;
-    for (py::ssize_t i = 0; i < n; ++i)
-      o[i] = std::apply([&](auto... p) { return f(p[i]...); }, ptrs);
-  }
-  return out;
-}
-
 // Binds name(arrays..., errors) choosing the policy once per call, outside the loop.
 template <class Raise, class Nan, class... Arrays>
 py::array_t<double> dispatch(int errors, Raise raise, Nan nan, const Arrays&... in) {
-  if (errors == static_cast<int>(on_error::nan)) return map_elementwise(nan, in...);
-  return map_elementwise(raise, in...);
+  if (errors == static_cast<int>(on_error::nan)) return map_elements(nan, 0, in...);
+  return map_elements(raise, 0, in...);
 }
 
 using policies::default_policy;
@@ -64,15 +45,12 @@ void bind_elliptic(py::module_& m) {
     double* pe = e.mutable_data();
     double* pk = k.mutable_data();
     const double* q = mm.data();
-    {
-      py::gil_scoped_release release;
-      for (py::ssize_t i = 0; i < n; ++i) {
-        const auto r = errors == static_cast<int>(on_error::nan) ? gecko::ellint_ek(q[i], nan_policy())
-                                                                 : gecko::ellint_ek(q[i], default_policy());
-        pe[i] = r.E;
-        pk[i] = r.K;
-      }
-    }
+    for_each_element(static_cast<std::size_t>(n), threads_for(static_cast<std::size_t>(n), 0), [&](std::size_t i) {
+      const auto r = errors == static_cast<int>(on_error::nan) ? gecko::ellint_ek(q[i], nan_policy())
+                                                               : gecko::ellint_ek(q[i], default_policy());
+      pe[i] = r.E;
+      pk[i] = r.K;
+    });
     return py::make_tuple(e, k);
   }, py::arg("m"), py::arg("errors") = 0);
   m.def("carlson_rf", [](const darray& x, const darray& y, const darray& z, int errors) {

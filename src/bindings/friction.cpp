@@ -13,10 +13,10 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "bindings.hpp"
+#include "vectorize.hpp"
 #include "gecko/beam.hpp"
 #include "gecko/friction.hpp"
 
@@ -51,33 +51,14 @@ py::array_t<double> from_mat2(const Mat2& M) {
   return out;
 }
 
-// Runs body(begin, end) over [0, n) without the GIL, split over up to 8 threads for long arrays
-// (at least 100000 elements each; the elements are independent). An exception in a worker is
-// re-thrown here once all have joined, with the GIL held again.
+// Runs body(begin, end) over [0, n) on the one pool without the GIL (vectorize.hpp), automatic
+// thread count (several threads only for long arrays).
 template <class Body>
 void parallel_for(py::ssize_t n, Body body) {
-  py::gil_scoped_release release;
-  const py::ssize_t per_thread = 100000;
-  const unsigned hw = std::thread::hardware_concurrency();
-  py::ssize_t threads = std::min<py::ssize_t>({py::ssize_t(hw == 0 ? 1 : hw), 8, n / per_thread});
-  if (threads < 2) {
-    body(py::ssize_t(0), n);
-    return;
-  }
-  std::vector<std::exception_ptr> errors(static_cast<std::size_t>(threads));
-  std::vector<std::thread> pool;
-  auto run = [&](py::ssize_t k) {
-    try {
-      body(n * k / threads, n * (k + 1) / threads);
-    } catch (...) {
-      errors[std::size_t(k)] = std::current_exception();
-    }
-  };
-  for (py::ssize_t k = 1; k < threads; ++k) pool.emplace_back(run, k);
-  run(0);
-  for (auto& t : pool) t.join();
-  for (auto& e : errors)
-    if (e) std::rethrow_exception(e);
+  const auto count = static_cast<std::size_t>(n);
+  for_each_block(count, threads_for(count, 0), [&](std::size_t lo, std::size_t hi) {
+    body(static_cast<py::ssize_t>(lo), static_cast<py::ssize_t>(hi));
+  });
 }
 
 // A shape backed by Python callables; the GIL is held throughout (castigliano does not release
