@@ -43,6 +43,7 @@ STATUS = {
     4: "singular (at a fold)",
     5: "invalid input",
     6: "not reached (the followed line was given up before this Ft)",
+    7: "inadmissible (solves the equations but the seta crosses the substrate or the strain limit)",
 }
 
 _LINE_END = {

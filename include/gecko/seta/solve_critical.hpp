@@ -23,7 +23,8 @@
 namespace gecko {
 
 // What happened to one critical-state solve. 0 means a verified solution; everything else comes
-// with NaN in Fn and theta_joint.
+// with NaN in Fn and theta_joint, except inadmissible (7), which keeps the solved Fn and
+// theta_joint so that the state can be drawn.
 enum class critical_status : int {
   converged = 0,
   not_converged = 1,      // Newton did not converge from the guess it was given
@@ -31,8 +32,10 @@ enum class critical_status : int {
   unsupported_state = 3,  // the state leaves the model's forms (axial load comparable to EA)
   singular = 4,           // singular Jacobian: Ft at a fold of the line (use the line instead)
   invalid_input = 5,      // bad input under nan_policy
-  not_reached = 6         // the line followed from Ft = 0 stopped before this Ft without ending
+  not_reached = 6,        // the line followed from Ft = 0 stopped before this Ft without ending
                           // (point budget, step collapse, corrector failure): unknown, not "none"
+  inadmissible = 7        // solves the equations, but the deformed seta crosses the substrate
+                          // (joint or beam below z = 0) or exceeds the caller's strain limit
 };
 
 template <class T>
