@@ -1,6 +1,6 @@
 """gecko.design_optimize — gradient-based, multi-start design optimisation of the two-level seta.
 
-models.md §1 (critical line of adhesion and its characteristic quantities); the paper's closing
+docs/theory/two_level_seta.md (critical line of adhesion and its characteristic quantities); the paper's closing
 discussion (001, §3.2 "Tunability", last paragraph) on optimising the structural parameters: first
 keep the seta non-sticky at rest, (Fn)0 > 0 (eq 22), then make the maximum pull-off force large.
 
@@ -80,7 +80,7 @@ _DERIVED = {"EI2/EI1": "EI2", "l2/l1": "l2", "alpha1+alpha2": "alpha1"}
 _ANGLES = {"alpha1", "alpha2", "alpha1+alpha2"}
 _HALF_PI = math.pi / 2
 _ANGLE_MARGIN = 1e-6
-# Allowed ranges of every variable (the model's domain, models.md §1), for the error messages.
+# Allowed ranges of every variable (the model's domain, docs/theory/two_level_seta.md), for the error messages.
 _DOMAIN = {name: (0.0, math.inf, "(0, inf)") for name in ("EI1", "EI2", "EA1", "EA2", "l1", "l2", "w",
                                                           "EI2/EI1", "l2/l1")}
 _DOMAIN.update({"alpha1": (0.0, _HALF_PI, "(0, pi/2)"), "alpha2": (0.0, _HALF_PI, "[0, pi/2)"),
@@ -298,7 +298,7 @@ def _refine_minimum(seta: TwoLevelSeta, scale: float):
 
 
 # Force-like parameters: Fn(l Ft; l p_F, p_L) = l Fn(Ft; p) for the stiffnesses and w (the governing
-# equations are homogeneous in force units with the lengths fixed, models.md §1), so by Euler's
+# equations are homogeneous in force units with the lengths fixed, docs/theory/two_level_seta.md), so by Euler's
 # theorem Ft dFn/dFt = Fn - sum_F p_F dFn/dp_F: the exact slope of the line from the exact design
 # sensitivities. EA = inf drops out (its term is 0 x inf, and it stays inf under the scaling).
 _FORCE_LIKE = [_INDEX[f] for f in ("EI1", "EI2", "EA1", "EA2", "w")]

@@ -8,7 +8,7 @@ designs: the nine design fields, the outputs asked for, and ``status``::
     designs = gecko.sobol_designs({"EI1": (1, 10), "alpha2": (0, 0.5)}, n=4096, seed=1)
     table = gecko.sweep(designs, outputs=["fn0", "slope_k", "max_pull_off"], out="runs/")
 
-Only what the outputs need is solved (models.md §1, gecko/seta/characteristics.hpp):
+Only what the outputs need is solved (docs/theory/two_level_seta.md, gecko/seta/characteristics.hpp):
 
 * ``ft_max`` and the ``small_*`` quantities are closed forms: no solver runs;
 * ``fn0``, ``slope_k``, ``sticky_at_rest`` need the natural state at Ft = 0 (one homotopy solve
@@ -72,7 +72,7 @@ __all__ = ["sweep", "SWEEP_OUTPUTS", "DEFAULT_SWEEP_OUTPUTS", "design_grid", "ra
 
 #: the design fields, in the order of the compiled kernels
 FIELDS = _seta.TwoLevelSeta._FIELDS
-#: the reference scene (models.md §1, TwoLevelSeta's defaults): every field a table leaves out
+#: the reference scene (docs/theory/two_level_seta.md, TwoLevelSeta's defaults): every field a table leaves out
 DEFAULTS = {f: float(inspect.signature(_seta.TwoLevelSeta).parameters[f].default) for f in FIELDS}
 
 #: output -> solver depth it needs (0: closed forms, 1: natural state at Ft = 0, 2: the line)

@@ -1,7 +1,7 @@
 """gecko.friction — frictional adhesion dynamics of the gecko spatula and seta.
 
 Implements paper 000 (Yamaguchi, Gravish, Autumn, Creton, J. Phys. Chem. B 113, 3622 (2009)) as
-restated in models.md §2, plus two checks beyond it:
+restated in docs/theory/frictional_adhesion.md, plus two checks beyond it:
 
 * curved-beam compliance and rigidity by Castigliano for any centreline ``z(x)``
   (:func:`castigliano_compliance`), and the Appendix-1 parabola in closed form
@@ -60,7 +60,7 @@ def _scalar(x, name: str) -> float:
     return float(a)
 
 
-# ---- curved beam (models.md §2, Appendix 1) ------------------------------------------------
+# ---- curved beam (docs/theory/frictional_adhesion.md, Appendix 1) ------------------------------------------------
 
 def castigliano_compliance(z: Callable, dzdx: Optional[Callable] = None, *, L: float = 1.0,
                            EI: float = 1.0, EA: float = np.inf, tol: float = 0.0,

@@ -1,6 +1,6 @@
 """gecko.seta — the two-level seta of directional adhesion and the classical peel lines.
 
-models.md §1. ``TwoLevelSeta`` holds a design (defaults: the paper's reference scene) and computes
+docs/theory/two_level_seta.md. ``TwoLevelSeta`` holds a design (defaults: the paper's reference scene) and computes
 its exact critical line of adhesion in C++ (Carlson forms of the elastica lengths, turning points
 and folds included, the GIL released)::
 
@@ -99,7 +99,7 @@ class CriticalLine:
 
 @dataclass
 class SetaCharacteristics:
-    """Characteristic quantities (models.md §1) and their small-deformation counterparts."""
+    """Characteristic quantities (docs/theory/two_level_seta.md) and their small-deformation counterparts."""
 
     fn0: float
     slope_k: float
@@ -122,7 +122,7 @@ class SetaCharacteristics:
 
 
 class TwoLevelSeta:
-    """A two-level seta design (models.md §1); the defaults are the paper's reference scene.
+    """A two-level seta design (docs/theory/two_level_seta.md); the defaults are the paper's reference scene.
 
     EI1, EI2: bending stiffnesses of beam and spatula; EA1, EA2: axial stiffnesses (``math.inf``:
     inextensible); l1, l2: lengths; alpha1: base angle in (0, pi/2); alpha2 >= 0: kink at the joint,
@@ -241,7 +241,7 @@ class TwoLevelSeta:
 
 
 class SingleFiber:
-    """The single-level fiber of He et al. 2013 (models.md §1, Fig 4): one segment of length l,
+    """The single-level fiber of He et al. 2013 (docs/theory/two_level_seta.md, Fig 4): one segment of length l,
     bending stiffness EI, axial stiffness EA (``math.inf``: inextensible), base angle alpha in
     (0, pi/2), work of adhesion w. Defaults: EI = 1/2, EA = 50, l = 1, alpha = pi/3, w = 1.
     """
