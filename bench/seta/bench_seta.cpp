@@ -7,7 +7,7 @@
 //     same residual and Jacobian (gecko/seta/critical_equations.hpp's system), natural
 //     continuation point to point from the previous solution, at several tolerances;
 //   * the batch call (many designs x many Ft) on 1 and 2 threads, designs per second.
-// The scipy peer (../shared/peers/critical_line_scipy.py) is timed by bench/seta/peer_scipy.py in
+// The scipy peer (bench/seta/scipy_peer.py) is timed by bench/seta/peer_scipy.py in
 // the same run (bench/seta/run.sh).
 //
 // Error: every method's Fn is checked by an independent route — RK4 shooting of the governing ODE

@@ -17,6 +17,8 @@ import time
 from pathlib import Path
 from typing import List, Optional
 
+from ._optional import MissingOptionalDependency
+
 EPILOG = """\
 usage of each command (gecko COMMAND --help for details):
   gecko run SCENE.toml --out DIR [--svg] [--resolution R] [--quiet] [--no-figures]
@@ -176,6 +178,9 @@ def main(argv: Optional[List[str]] = None) -> int:
     except SceneError as err:
         _err(str(err))
         return 2
+    except MissingOptionalDependency as err:  # the message names the extra that installs it
+        _err(str(err))
+        return 2
     except KeyboardInterrupt:
         _err("interrupted; nothing half-written was left in the output folder (a [sweep] keeps its "
              "finished chunks there: run the same command again to resume)")
@@ -195,7 +200,7 @@ def _run(scenes: List[Path], args) -> int:
             res = run_scene(s, args.out, formats=formats, resolution=_resolution(args),
                             progress=_progress(args), cache=cache, threads=args.threads,
                             draw=not getattr(args, "no_figures", False))
-        except SceneError:
+        except (SceneError, MissingOptionalDependency):
             raise
         except Exception as exc:  # a kernel failure: say which scene, exit 1
             _err(f"{s}: {type(exc).__name__}: {exc}")

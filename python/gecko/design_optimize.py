@@ -787,11 +787,9 @@ def optimize_seta(objective, bounds: dict, constraints=(), *, base=None, starts:
     impossible problem ends with status "infeasible", never a loop.
     """
     t0 = time.perf_counter()
-    try:
-        import scipy.optimize  # noqa: F401
-        import scipy.stats  # noqa: F401
-    except ImportError:  # pragma: no cover - scipy is in the test environment
-        raise ImportError("gecko.optimize_seta needs scipy (pip install gecko[optimize])") from None
+    from ._optional import require
+    require("scipy.optimize", "gecko.optimize_seta", "optimize")
+    require("scipy.stats", "gecko.optimize_seta", "optimize")
     if isinstance(objective, str):
         if objective not in _OBJECTIVE_FUNCS:
             raise ValueError(f"objective = {objective!r} is not allowed: need one of {OBJECTIVES}, "

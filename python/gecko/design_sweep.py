@@ -50,7 +50,7 @@ written where ``sweep`` runs, so the workers need no shared disk. An address whe
 answers raises ConnectionError after ``connect_timeout`` seconds.
 
 pandas (and pyarrow for ``out=``, dask.distributed for clusters) are optional dependencies:
-``pip install gecko[sweep]``.
+``pip install "gecko-adhesion[sweep]"`` (a Dask cluster: ``pip install "gecko-adhesion[dask]"``).
 """
 from __future__ import annotations
 
@@ -65,6 +65,7 @@ from typing import Any, Callable, Dict, Iterable, List, Mapping, Optional, Seque
 import numpy as np
 
 from . import _core
+from ._optional import require
 from . import seta as _seta
 
 __all__ = ["sweep", "SWEEP_OUTPUTS", "DEFAULT_SWEEP_OUTPUTS", "design_grid", "random_designs",
@@ -102,16 +103,10 @@ _DOMAIN = {
     "w": (0.0, math.inf, False, "0 < w < inf"),
 }
 
-_EXTRA = "pip install gecko[sweep]"
-
-
 def _need(module: str, what: str):
-    import importlib
-    try:
-        return importlib.import_module(module)
-    except ImportError as exc:
-        raise ImportError(f"{what} needs the optional package {module.split('.')[0]!r} "
-                          f"({_EXTRA} installs pandas, pyarrow, dask[distributed] and scipy): {exc}") from None
+    # [sweep] installs pandas, pyarrow and scipy; [dask] installs dask[distributed]
+    extra = "dask" if module.split(".")[0] in ("dask", "distributed") else "sweep"
+    return require(module, what, extra)
 
 
 # ---- designs --------------------------------------------------------------------------------------

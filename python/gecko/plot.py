@@ -21,6 +21,10 @@ from typing import Optional, Sequence
 
 import numpy as np
 
+from ._optional import require
+
+require("matplotlib", "gecko.plot", "plot")  # a clear install hint instead of a failure mid-drawing
+
 __all__ = [
     "FN_LABEL", "FT_LABEL", "FORCE_SPACE_XLIM", "FORCE_SPACE_YLIM",
     "force_space_axes", "critical_line", "seta_critical_line", "fiber_critical_line",

@@ -234,7 +234,7 @@ def test_bad_design_tables():
 def test_without_pandas_the_error_names_the_extra(monkeypatch):
     import sys
     monkeypatch.setitem(sys.modules, "pandas", None)
-    with pytest.raises(ImportError, match=r"pip install gecko\[sweep\]"):
+    with pytest.raises(ImportError, match=r"pip install \"gecko-adhesion\[sweep\]\""):
         gecko.sweep(design_sweep.design_matrix({"EI1": [5.0]}), progress=False)
 
 
