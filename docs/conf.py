@@ -64,3 +64,21 @@ html_theme_options = {
     "page_width": "1100px",
 }
 suppress_warnings = []
+
+
+# Prose docstrings write absolute values and norms as |x|, which reStructuredText would read as a
+# substitution reference; escape them (gecko's docstrings use no substitutions).
+import re  # noqa: E402
+
+_BARS = re.compile(r"(?<![\\|\w])\|(?=[^\s|])([^|\n]*?[^\s|\\])\|(?![|\w])")
+
+
+def _escape_bars(app, what, name, obj, options, lines):
+    for i, line in enumerate(lines):
+        if line.lstrip().startswith(("|", "+-", ">>>", "...")):
+            continue  # tables and doctest lines stay as they are
+        lines[i] = _BARS.sub(r"\\|\1\\|", line)
+
+
+def setup(app):
+    app.connect("autodoc-process-docstring", _escape_bars)

@@ -49,7 +49,7 @@ def _api(out: Path) -> None:
         lines += [f"   gecko.{n}" for n in names]
         lines += ["```", ""]
     rest = [n for n in gecko.__all__ if n not in seen and n != "__version__"]
-    lines += ["## Scenes", "", "Declarative studies; see {doc}`/gallery` for every paper figure as a scene.", "",
+    lines += ["## Scenes", "", "Declarative studies; see {doc}`/_generated/gallery` for every paper figure as a scene.", "",
               "```{eval-rst}", ".. autosummary::", "   :toctree: api", ""]
     lines += [f"   gecko.{n}" for n in rest]
     lines += ["```", "", "## Plotting", "", "```{eval-rst}", ".. autosummary::", "   :toctree: api", ""]
