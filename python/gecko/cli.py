@@ -124,6 +124,32 @@ def _progress(args) -> Optional[bool]:
 
 
 def main(argv: Optional[List[str]] = None) -> int:
+    """Run the ``gecko`` command line: ``gecko run``, ``figures``, ``plan``, ``validate``, ``models``.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The arguments (default: ``sys.argv[1:]``).
+
+    Returns
+    -------
+    int
+        The exit status: 0 success, 1 a computation failed, 2 bad usage, an invalid scene or a
+        missing optional package (the message names the extra to install), 130 interrupted.
+
+    Examples
+    --------
+    >>> from gecko.cli import main
+    >>> main(["validate", "--help"])  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    SystemExit: 0
+    >>> from gecko.scene import figure_scenes
+    >>> main(["plan", str(figure_scenes()[0])])  # doctest: +ELLIPSIS
+    scene: Two-level seta: critical line of adhesion of the reference design  (resolution 1)
+    ...
+    0
+    """
     os.environ.setdefault("MPLBACKEND", "Agg")  # never open a window
     parser = _parser()
     args = parser.parse_args(argv)
