@@ -31,6 +31,9 @@ import numpy as np
 from . import _core
 from ._vectorize import error_code as _error_code, flat_args as _flat_args, shaped as _shaped
 
+#: outcome of a Levenberg-Marquardt fit, an IntEnum bound from C++ (gecko/friction/fit.hpp)
+FitStatus = _core.FitStatus
+
 __all__ = [
     # beam
     "castigliano_compliance", "parabolic_beam_compliance", "parabolic_beam_rigidity", "rigidity",
@@ -41,7 +44,7 @@ __all__ = [
     "viscoelastic_detachment", "eyring_detachment", "ViscoelasticDetachment", "EyringDetachment",
     "detachment_stretch", "resonant_frequency",
     # steady sliding
-    "SlidingModel", "FIG6_VISCOELASTIC", "FIG6_PLASTIC", "steady_sliding", "SteadySliding",
+    "SlidingModel", "FIG6_VISCOELASTIC", "FIG6_PLASTIC", "steady_sliding", "SteadySliding", "FitStatus",
     # beyond the paper
     "simulate_spatulae", "SpatulaSimulation", "fit_steady_sliding", "SteadySlidingFit",
 ]
@@ -357,6 +360,11 @@ class SteadySlidingFit(NamedTuple):
     rss: float
     iterations: int
     status: str                   # "converged", "max_iterations" or "singular"
+
+    @property
+    def status_code(self) -> "FitStatus":
+        """``status`` as a :class:`FitStatus` member (code compares these, not the text)."""
+        return FitStatus[self.status]
 
 
 def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC, *,

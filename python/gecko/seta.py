@@ -32,8 +32,18 @@ from ._vectorize import error_code as _error_code, vectorised as _vectorised
 
 __all__ = [
     "TwoLevelSeta", "SingleFiber", "CriticalLine", "SetaCharacteristics", "kendall_fn", "rivlin_fn",
-    "critical_line_batch", "STATUS",
+    "critical_line_batch", "STATUS", "DESIGN_FIELDS", "SetaDesign", "CriticalStatus", "LineEnd",
+    "MinimumStatus",
 ]
+
+# The domain comes from C++ (src/bindings/seta_types.cpp): the design type with its fields, defaults
+# and admissible ranges, and the status codes as IntEnums (equal to the plain integers in arrays).
+SetaDesign = _core.SetaDesign
+#: the nine design fields in the order of every flat design array
+DESIGN_FIELDS = tuple(SetaDesign.fields)
+CriticalStatus = _core.CriticalStatus
+LineEnd = _core.LineEnd
+MinimumStatus = _core.MinimumStatus
 
 STATUS = {
     0: "converged",
@@ -92,6 +102,7 @@ class CriticalLine:
     folds: list = field(default_factory=list)
     end: Optional[str] = None
     branch: Optional[np.ndarray] = None
+    end_code: Optional[LineEnd] = None   # ``end`` as a LineEnd member (code compares these)
 
     def __len__(self) -> int:
         return int(np.size(self.Ft))
@@ -119,6 +130,8 @@ class SetaCharacteristics:
     small_slope_k: float
     small_contact_length: float
     small_non_sticky: bool
+    end_code: Optional[LineEnd] = None              # ``end`` as a LineEnd member
+    min_status_code: Optional[MinimumStatus] = None  # ``min_status`` as a MinimumStatus member
 
 
 class TwoLevelSeta:
@@ -129,7 +142,7 @@ class TwoLevelSeta:
     alpha1 + alpha2 < pi/2; w: work of adhesion. Invalid values raise ``ValueError`` at construction.
     """
 
-    _FIELDS = ("EI1", "EI2", "EA1", "EA2", "l1", "l2", "alpha1", "alpha2", "w")
+    _FIELDS = DESIGN_FIELDS
 
     def __init__(self, EI1: float = 5.0, EI2: float = 2.0, EA1: float = math.inf, EA2: float = 50.0,
                  l1: float = 1.0, l2: float = 0.1, alpha1: float = math.pi / 6,
@@ -173,7 +186,7 @@ class TwoLevelSeta:
                                 turning_points_beam=d["turning_points_beam"],
                                 turning_points_spatula=d["turning_points_spatula"],
                                 folds=list(d["folds"]), end=_LINE_END.get(d["end"], str(d["end"])),
-                                branch=d["branch"])
+                                branch=d["branch"], end_code=LineEnd(d["end"]))
         if not resolve_nodes:
             raise ValueError("resolve_nodes=False applies to the traced line only (critical_line() without Ft); "
                              "states at requested Ft are always solved to the tolerance")
@@ -207,6 +220,7 @@ class TwoLevelSeta:
         ``slope_at_min_fn`` ~ 0; "not_certified": NaN values, never a traced node's Fn)."""
         d = _core.seta_characteristics(self._params(), math.nan if ft_end is None else float(ft_end))
         d = dict(d)
+        d["end_code"], d["min_status_code"] = LineEnd(d["end"]), MinimumStatus(d["min_status"])
         d["end"] = _LINE_END.get(d["end"], str(d["end"]))
         d["min_status"] = _MIN_STATUS.get(d["min_status"], str(d["min_status"]))
         d["folds"] = list(d["folds"])

@@ -19,12 +19,15 @@ from typing import Any, Dict, List, Optional, Sequence
 
 import numpy as np
 
+from ..progress import Progress  # noqa: F401  (moved to gecko.progress; old name kept)
+from ..seta import DESIGN_FIELDS, CriticalStatus
 from .errors import SceneError
 from .models import CHARACTERISTIC_LABELS
 from .planner import Plan, Step, plan_scene
 from .schema import DEFAULT_GRIDS, Point, Scene, Study, eval_grid, load_scene
 
-SETA_FIELDS = ("EI1", "EI2", "EA1", "EA2", "l1", "l2", "alpha1", "alpha2", "w")
+#: the two-level seta design fields (from the bound C++ design type)
+SETA_FIELDS = DESIGN_FIELDS
 
 
 # ---- results ------------------------------------------------------------------------------------
@@ -53,35 +56,7 @@ class RunResult:
     files: List[Path] = field(default_factory=list)
     seconds: float = 0.0
     sweep: Any = None                       # the [sweep] table (a pandas DataFrame)
-    optimum: Any = None                     # the [optimize] result (gecko.design_optimize.SetaOptimum)
-
-
-class Progress:
-    """A one-line progress bar on a terminal, shown only for work longer than ``delay`` seconds."""
-
-    def __init__(self, total: int, label: str = "", stream=None, enabled: Optional[bool] = None,
-                 delay: float = 1.0):
-        import sys
-        self.stream = stream if stream is not None else sys.stderr
-        if enabled is None:
-            enabled = bool(getattr(self.stream, "isatty", lambda: False)())
-        self.enabled, self.total, self.label, self.delay = enabled, max(total, 1), label, delay
-        self.done, self.start, self.shown = 0, time.monotonic(), False
-
-    def advance(self, n: int = 1, what: str = "") -> None:
-        self.done += n
-        if not self.enabled or time.monotonic() - self.start < self.delay:
-            return
-        frac = min(self.done / self.total, 1.0)
-        bar = "#" * int(30 * frac) + "." * (30 - int(30 * frac))
-        self.stream.write(f"\r{self.label} [{bar}] {self.done}/{self.total} {what[:30]:<30}")
-        self.stream.flush()
-        self.shown = True
-
-    def close(self) -> None:
-        if self.shown:
-            self.stream.write("\r" + " " * 100 + "\r")
-            self.stream.flush()
+    optimum: Any = None                     # the [optimize] result (gecko.optimize.SetaOptimum)
 
 
 class Cache(dict):
@@ -190,7 +165,8 @@ class _Executor:
                     Fn = rivlin_fn(g, p.values["w"], errors="nan")
                 Fn = np.atleast_1d(np.asarray(Fn, dtype=np.float64))
                 self.data[st.name][i]["critical_line"] = {"Ft": g, "Fn": Fn,
-                                                          "status": np.where(np.isfinite(Fn), 0, 5)}
+                                                          "status": np.where(np.isfinite(Fn), CriticalStatus.converged,
+                                                                             CriticalStatus.invalid_input)}
                 self.progress.advance(1, st.name)
 
     def k_fn0_from_line(self, st: Study, step: Step) -> None:
@@ -370,8 +346,14 @@ def _peel_characteristics(model: str, v: Dict[str, float]) -> Dict[str, float]:
 
 # ---- curves of each plot -------------------------------------------------------------------------
 
-_TEX = {"EI1": "EI_1", "EI2": "EI_2", "EA1": "EA_1", "EA2": "EA_2", "l1": "l_1", "l2": "l_2",
-        "alpha1": "\\alpha_1", "alpha2": "\\alpha_2", "w": "w"}
+def _tex_symbol(name: str) -> str:
+    """TeX of a design field: EI1 -> EI_1, alpha2 -> \\alpha_2."""
+    head, digit = (name[:-1], name[-1]) if name[-1:].isdigit() else (name, "")
+    head = "\\" + head if head == "alpha" else head
+    return f"{head}_{digit}" if digit else head
+
+
+_TEX = {f: _tex_symbol(f) for f in SETA_FIELDS}
 _ROLE = {"two_level_seta": "seta", "single_fiber": "fiber", "kendall": "kendall", "rivlin": "rivlin"}
 
 
@@ -573,7 +555,7 @@ def _run_sweep(sc: Scene, out: Optional[os.PathLike], threads: int, progress: Op
 
 
 def _run_optimize(sc: Scene):
-    from ..design_optimize import optimize_from_scene
+    from ..optimize import optimize_from_scene
     try:
         return optimize_from_scene(dict(sc.optimize.table))
     except ValueError as exc:
