@@ -3,7 +3,7 @@
 largest verified Fn differences and the largest beta differences; kind bounded_time: the slowest
 design and every timeout). Rows already in the file are not repeated.
 
-    python3 bench/stress/add_regressions.py bench/stress/stress_10000.npz [--top 3]
+    python3 -m validation.add_regressions validation/stress_10000.npz [--top 3]
 """
 import csv
 import os
@@ -12,10 +12,9 @@ import sys
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
-import campaign  # noqa: E402
+from . import campaign  # noqa: E402
 
-CSV = os.path.join(HERE, "..", "..", "tests", "data", "stress_regressions.csv")
+CSV = os.path.join(HERE, "..", "tests", "data", "stress_regressions.csv")
 
 
 def main(path, top=3):

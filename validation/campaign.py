@@ -1,10 +1,10 @@
 #!/usr/bin/env python3
 """Stress campaign of the two-level seta solver (issue 6, "Evidence"): random designs over a wide
 box, every returned critical state verified by an independent ODE shooting route
-(bench/stress/verify.py, no gecko code), statuses histogrammed, worst cases kept.
+(validation/verify.py, no gecko code), statuses histogrammed, worst cases kept.
 
-    python3 bench/stress/campaign.py --designs 10000 --workers 2 --out bench/stress/stress_10000.npz
-    python3 bench/stress/report.py bench/stress/stress_10000.npz
+    python3 -m validation.campaign --designs 10000 --workers 2 --out validation/stress_10000.npz
+    python3 -m validation.report validation/stress_10000.npz
 
 The designs are split into chunks (--chunk designs each); each chunk (gecko, then the verifier) runs
 in its own process, --workers at once, and is saved to <out>_chunks/chunk_NNNNN.npz as soon as it
@@ -36,9 +36,9 @@ import time
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import verify  # noqa: E402
+from . import verify  # noqa: E402
 
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))  # where "-m validation.campaign" runs
 FIELDS = ("EI1", "EI2", "EA1", "EA2", "l1", "l2", "alpha1", "alpha2", "w")
 WRONG_REL = 1e-8
 
@@ -262,8 +262,8 @@ def main(argv=None):
     todo = [k for k in range(nchunks) if not os.path.exists(chunk_path(outdir, k))]
     print(f"{nchunks} chunks of {args.chunk} designs, {len(todo)} to run, {args.workers} workers -> {outdir}",
           flush=True)
-    base = [sys.executable, os.path.abspath(__file__), "--designs", str(args.designs), "--seed", str(args.seed),
-            "--timeout", str(args.timeout), "--out", args.out, "--chunk", str(args.chunk)]
+    base = [sys.executable, "-m", "validation.campaign", "--designs", str(args.designs), "--seed", str(args.seed),
+            "--timeout", str(args.timeout), "--out", os.path.abspath(args.out), "--chunk", str(args.chunk)]
     running = {}
     t0 = time.time()
     done = 0
@@ -271,7 +271,7 @@ def main(argv=None):
     while todo or running:
         while todo and len(running) < args.workers:
             k = todo.pop(0)
-            running[k] = subprocess.Popen(base + ["--run-chunk", str(k)])
+            running[k] = subprocess.Popen(base + ["--run-chunk", str(k)], cwd=ROOT)
         time.sleep(0.5)
         for k, pr in list(running.items()):
             if pr.poll() is not None:

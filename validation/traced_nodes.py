@@ -13,7 +13,7 @@ double, is ~1e-8 instead of 0 (an Ft an ulp below (Ft)max moves Fn by ~1e-7: the
 conditioning, tests/seta/near_singular.cpp). gecko maps such Ft to the end itself; its end states
 are checked against mpmath in tests/seta/line_end.cpp.
 
-    python3 bench/stress/traced_nodes.py --designs 400 --seed 5 --per-line 8 [--hp 2] [--json out.json]
+    python3 -m validation.traced_nodes --designs 400 --seed 5 --per-line 8 [--hp 2] [--json out.json]
 
 --hp N: the N nodes where the raw continuation node (resolve_nodes=False) differs most from the
 re-solved one, both checked against the 60-digit Taylor shooting (beta_conditioning.py); and the
@@ -31,9 +31,7 @@ import time
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import campaign  # noqa: E402
-import verify  # noqa: E402
+from . import campaign, verify  # noqa: E402
 
 
 def main(argv=None):

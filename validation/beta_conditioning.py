@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """High-precision check of the campaign states where the double-precision verifier disagrees with
-gecko in beta but not in Fn (bench/results/stress.md, "beta investigation"), or (--by fn) of the
+gecko in beta but not in Fn (validation/results/stress.md, "beta investigation"), or (--by fn) of the
 states with the largest verified Fn differences.
 
 Route (no gecko code, no double-precision step): the same backward shooting as verify.py (models.md
@@ -13,7 +13,7 @@ Reported per state: gecko's errors |Fn - Fn*|/max(1,|Fn*|) and |beta - beta*|, t
 verifier's dbeta, and the condition number dbeta_shot/dFn of the tip-to-joint map that the
 verifier uses (the amplification that makes its beta inconclusive).
 
-    python3 bench/stress/beta_conditioning.py bench/stress/stress_2000.npz [--top 6] [--by fn] [--json out.json]
+    python3 -m validation.beta_conditioning validation/stress_2000.npz [--top 6] [--by fn] [--json out.json]
 """
 from __future__ import annotations
 
@@ -25,8 +25,6 @@ import sys
 import mpmath as mp
 import numpy as np
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, HERE)
 
 DPS = 60
 ORDER = 40
@@ -138,7 +136,7 @@ def main(argv=None):
                          " the double verifier flags as silently wrong (campaign.classify)")
     args = ap.parse_args(argv)
     mp.mp.dps = DPS
-    import campaign
+    from . import campaign
     z = np.load(args.npz)
     P, FT, Fn, beta, status = z["P"], z["FT"], z["Fn"], z["beta"], z["status"]
     scale = np.maximum(1.0, np.abs(Fn))

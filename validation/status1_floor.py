@@ -10,7 +10,7 @@ how many of them converge at the looser tolerance and how far those are from the
 and how many belong to designs whose natural state at Ft = 0 was not found at all (then every Ft of
 the design is status 1).
 
-    python3 bench/stress/status1_floor.py bench/stress/stress_10000.npz [--tolerance 1e-10] [--json out.json]
+    python3 -m validation.status1_floor validation/stress_10000.npz [--tolerance 1e-10] [--json out.json]
 """
 from __future__ import annotations
 
@@ -21,9 +21,7 @@ import time
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import campaign  # noqa: E402
-import verify  # noqa: E402
+from . import campaign, verify  # noqa: E402
 
 
 def main(argv=None):

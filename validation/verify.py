@@ -206,7 +206,7 @@ def verify(d, Ft, Fn, beta, newton_iterations=5):
     # (relative) and scale the response down to a rounding-level perturbation of NOISE_REL to bound
     # the verifier's own noise.  NOISE_REL = 1e-13 (~500 eps, the rounding accumulated over up to
     # 2^12 steps): with 1e-14 the bound was 15x too small on the worst campaign state, measured
-    # against a 60-digit Taylor-series shooting (bench/stress/beta_conditioning.py).
+    # against a 60-digit Taylor-series shooting (validation/beta_conditioning.py).
     th3, be3, _, _, _, _ = shoot(d, Ft, Fn, tip_rel=1e-10)
     noise_th = np.abs(th3 - th) * (NOISE_REL / 1e-10)
     noise_be = np.abs(be3 - be) * (NOISE_REL / 1e-10)
