@@ -23,6 +23,12 @@ is bitwise the same for any chunk size, thread count and executor. With ``out=DI
 written to ``DIR/sweep-<key>/chunk-NNNNNN.parquet`` as soon as it is done (``<key>``: a hash of the
 designs, the outputs, the chunk size and the gecko version) and the finished table to
 ``DIR/sweep-<key>.parquet``; a run that was interrupted resumes from the chunks already written.
+Every file carries ``FILE.manifest.json`` (its sha256 and the hash of its designs, outputs and the
+gecko version) and is verified before reuse; a file that fails (edited, copied over another,
+truncated, unreadable) is computed again with a ``gecko._integrity.ResultFileWarning``. One
+process at a time writes a sweep (``DIR/sweep-<key>.lock``; a second one gets
+``gecko._locking.FolderLocked``). Ctrl-C keeps the finished blocks of the current chunk and raises
+KeyboardInterrupt saying where the run stopped.
 
 Status codes (``status``, as ``gecko.STATUS``): 0 solved; 1 natural state not found; 3 the
 natural state is outside the model's forms; 5 invalid design (only with ``errors="nan"``; the
