@@ -219,6 +219,26 @@ def test_second_writer_of_the_same_sweep_is_refused_clearly(tmp_path):
     assert len(t) == 9 and not lock.exists()
 
 
+def test_a_writer_in_another_process_blocks_until_it_dies(tmp_path):
+    d = designs()
+    lock = tmp_path / f"sweep-{key_of(d)}.lock"
+    holder = subprocess.Popen(
+        [sys.executable, "-c", "import sys, time; from gecko._locking import FolderLock; "
+         "FolderLock(sys.argv[1]).acquire(); print('held', flush=True); time.sleep(60)", str(lock)],
+        stdout=subprocess.PIPE, text=True, env=dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path)))
+    try:
+        assert holder.stdout.readline().strip() == "held"
+        with pytest.raises(_locking.FolderLocked, match=rf"in use by pid {holder.pid} "):
+            gecko.sweep(d, outputs=OUTS, chunk_size=3, out=tmp_path, progress=False)
+        assert not (tmp_path / f"sweep-{key_of(d)}").exists() or not os.listdir(tmp_path / f"sweep-{key_of(d)}")
+    finally:
+        holder.kill()  # killed, not released: the kernel drops its lock
+        holder.wait()
+        holder.stdout.close()
+    t = gecko.sweep(d, outputs=OUTS, chunk_size=3, out=tmp_path, progress=False)
+    assert len(t) == 9
+
+
 def test_other_sweeps_in_the_same_folder_run_side_by_side(tmp_path):
     d1, d2 = designs(seed=1), designs(seed=2)
     with _locking.FolderLock(str(tmp_path / f"sweep-{key_of(d1)}.lock")):
