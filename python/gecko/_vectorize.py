@@ -138,3 +138,19 @@ def vectorised(kernel, *args, errors):
     except ValueError as e:
         raise with_index(e, shape) from None
     return shaped(out, shape)
+
+
+def check_table(table, name: str = "designs") -> None:
+    """Every column of a design table (DataFrame, {name: column}, or array) through ``real_array``,
+    so that a complex, text, date or missing (None, pd.NA) entry is named by column and row."""
+    if hasattr(table, "columns") and hasattr(table, "to_numpy"):  # a DataFrame
+        for c in table.columns:
+            real_array(table[c].to_numpy(), f"{name}[{str(c)!r}]")
+    elif isinstance(table, dict):
+        for k, v in table.items():
+            real_array(v, f"{name}[{k!r}]")
+    elif isinstance(table, (list, tuple)) and table and all(hasattr(d, "_params") for d in table):
+        return  # design objects: checked when they were made
+    elif not hasattr(table, "_params"):
+        real_array(table, name)
+

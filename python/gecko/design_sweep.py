@@ -73,6 +73,7 @@ import numpy as np
 from . import _core
 from . import seta as _seta
 from ._sweep_store import SweepInterrupted as _SweepInterrupted
+from ._vectorize import check_table as _check_table
 from ._sweep_store import SweepStore as _SweepStore
 from ._sweep_store import compute_resumable as _compute_resumable
 
@@ -459,6 +460,7 @@ def sweep(designs, outputs: Optional[Sequence[str]] = None, *, out: Optional[Uni
         raise ValueError(f"threads = {threads!r} is out of range: need an integer >= 1")
     if isinstance(connect_timeout, bool) or not isinstance(connect_timeout, (int, float)) or not connect_timeout > 0:
         raise ValueError(f"connect_timeout = {connect_timeout!r} is out of range: need seconds > 0")
+    _check_table(designs)  # no silent conversion of complex, text, dates, None (gecko._vectorize)
     matrix = design_matrix(designs)
     n = matrix.shape[0]
     if n == 0:

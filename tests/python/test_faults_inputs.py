@@ -109,3 +109,24 @@ def test_friction_matrices_and_paths_refuse_complex():
         friction.force_trace(np.eye(2) + 0j * np.eye(2) + 1j)
     with pytest.raises(TypeError, match=r"times: None \(NoneType\) is not allowed \(at index 1\)"):
         friction.force_trace(times=[0.0, None])
+
+
+@pytest.mark.parametrize("table, why", [
+    ({"EI1": [1.0, 2.0 + 1j]}, r"designs\['EI1'\]: complex numbers are not allowed \(at index 1\)"),
+    ({"EI1": [1.0, None]}, r"designs\['EI1'\]: None \(NoneType\) is not allowed \(at index 1\)"),
+    ({"EI1": [1.0, "x"]}, r"designs\['EI1'\]: (text|'x' \(str\) is not allowed \(at index 1\))"),
+    (np.full((2, 9), 1.0 + 1j), r"designs: complex numbers are not allowed \(at index \(0, 0\)\)"),
+])
+def test_sweep_refuses_design_tables_a_conversion_would_reinterpret(table, why):
+    pytest.importorskip("pandas")
+    with pytest.raises(TypeError, match=why):
+        gecko.sweep(table, outputs=["ft_max"], progress=False)
+    if isinstance(table, dict):
+        import pandas as pd
+        df = pd.DataFrame(table)
+        if df["EI1"].dtype == np.float64:  # pandas itself made None a NaN: refused as an invalid row
+            with pytest.raises(ValueError, match="designs: row 1 is invalid"):
+                gecko.sweep(df, outputs=["ft_max"], progress=False)
+        else:
+            with pytest.raises(TypeError, match=why):
+                gecko.sweep(df, outputs=["ft_max"], progress=False)
