@@ -28,7 +28,12 @@ _STATUS = (0, 1, 3, 5, 6)
 
 
 class SweepInterrupted(KeyboardInterrupt):
-    """Ctrl-C during a sweep; the message says how far it got and how to resume."""
+    """Ctrl-C during a sweep; the message says how far it got and how to resume. ``done``,
+    ``total``: designs; ``folder``: where the finished work is kept (None without ``out=``)."""
+
+    def __init__(self, message: str, done: int = 0, total: int = 0, folder: Optional[str] = None):
+        super().__init__(message)
+        self.done, self.total, self.folder = done, total, folder
 
 
 def inputs_key(version: str, block: np.ndarray, outputs: Sequence[str], what: str) -> str:

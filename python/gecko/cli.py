@@ -224,8 +224,11 @@ def main(argv: Optional[List[str]] = None) -> int:
         _err(str(err))
         return EXIT_USAGE
     except KeyboardInterrupt as exc:
-        _err(f"interrupted{': ' + str(exc) if str(exc) else ''}; nothing half-written was left in the output "
-             "folder (a [sweep] keeps its finished work there: run the same command again to resume)")
+        where = ""
+        if getattr(exc, "folder", None):  # a sweep: how far it got (gecko._sweep_store.SweepInterrupted)
+            where = f" after {exc.done} of {exc.total} sweep designs, which are kept in {exc.folder}"
+        _err(f"interrupted{where}; nothing half-written was left in the output folder (a [sweep] keeps its "
+             "finished work: run the same command again to resume)")
         return EXIT_INTERRUPTED
     return EXIT_USAGE
 

@@ -533,7 +533,7 @@ def sweep(designs, outputs: Optional[Sequence[str]] = None, *, out: Optional[Uni
                  "out=) again to resume" if store is not None else " (nothing kept: pass out=DIR to resume "
                  "an interrupted sweep)")
         raise _SweepInterrupted(f"sweep interrupted after {finished} of {n} designs (chunks of {chunk_size})"
-                                + where) from None
+                                + where, finished, n, store.dir if store is not None else None) from None
     finally:
         if bar is not None:
             bar.close()

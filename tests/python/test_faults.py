@@ -371,3 +371,35 @@ def test_unwritable_out_is_refused_before_computing(tmp_path, monkeypatch):
     with pytest.raises(ValueError, match="out = .*cannot"):
         gecko.sweep(designs(), outputs=OUTS, out=f / "sub", progress=False)
     assert not called
+
+
+def test_real_ctrl_c_on_gecko_run_exits_130_and_the_next_run_resumes(tmp_path):
+    import signal
+    import time
+    scene = tmp_path / "sw.toml"
+    scene.write_text('[sweep]\ndesigns = "random"\nn = 40\nseed = 1\noutputs = ["fn0", "ft_max"]\n'
+                     'chunk_size = 10\n[sweep.bounds]\nEI1 = [2, 8]\nalpha2 = [0.2, 0.8]\n')
+    # every block of designs takes 0.5 s more, so that the signal lands mid-run
+    slow = ("import sys, time; import gecko.design_sweep as d; real = d.compute_chunk; "
+            "d.compute_chunk = lambda b, o, t: (time.sleep(0.5), real(b, o, t))[1]; "
+            "from gecko.cli import main; raise SystemExit(main(sys.argv[1:]))")
+    env = dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path))
+    argv = [sys.executable, "-c", slow, "run", str(scene), "--out", str(tmp_path / "o"), "--no-figures", "-q",
+            "--threads", "1"]
+    p = subprocess.Popen(argv, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    folder = tmp_path / "o" / ".gecko-sweep-sw.sweep"
+    t_end = time.monotonic() + 60
+    while not list(folder.glob("sweep-*/chunk-000000.parquet.manifest.json")) and time.monotonic() < t_end:
+        time.sleep(0.02)
+    p.send_signal(signal.SIGINT)
+    out, err = p.communicate(timeout=60)
+    assert p.returncode == 130, err
+    assert "interrupted after" in err and "sweep designs, which are kept in" in err and "Traceback" not in err
+    assert not (tmp_path / "o" / "sweep.parquet").exists()
+    r = subprocess.run(argv[:1] + ["-m", "gecko"] + argv[3:], env=env, capture_output=True, text=True, timeout=120)
+    assert r.returncode == 0, r.stderr
+    t = pd.read_parquet(tmp_path / "o" / "sweep.parquet")
+    fresh = gecko.sweep(gecko.random_designs({"EI1": (2, 8), "alpha2": (0.2, 0.8)}, 40, seed=1),
+                        outputs=["fn0", "ft_max"], progress=False)
+    bitwise_equal(t, fresh)
+    assert not folder.exists()

@@ -227,10 +227,10 @@ def test_interrupt_exits_130_and_a_failure_exits_1(tmp_path, monkeypatch, capsys
                              'outputs = { critical_line = { Ft = { range = [0, 1], num = 5 } } }\n')
 
     def interrupted(*a, **k):
-        raise SweepInterrupted("sweep interrupted after 5 of 9 designs; the finished work is kept in X")
+        raise SweepInterrupted("sweep interrupted after 5 of 9 designs; the finished work is kept in X", 5, 9, "X")
     monkeypatch.setattr(gecko.scene, "run_scene", interrupted)
     assert main(["run", p, "--out", str(tmp_path / "o")]) == 130
-    assert "after 5 of 9 designs" in capsys.readouterr().err
+    assert "interrupted after 5 of 9 sweep designs, which are kept in X" in capsys.readouterr().err
 
     def failed(*a, **k):
         raise RuntimeError("the solver broke")
