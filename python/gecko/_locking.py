@@ -51,10 +51,24 @@ def _host() -> str:
 _OWNED = re.compile(r"(\d+)@([A-Za-z0-9-]*)-")
 
 
-def owner_dead(name: str, prefix: str) -> bool:
-    """True when ``name`` (PREFIX<pid>@<host>-...) belongs to a process of this host that is gone."""
-    m = _OWNED.match(name[len(prefix):]) if name.startswith(prefix) else None
-    return bool(m) and m.group(2) == _host() and not pid_alive(int(m.group(1)))
+#: an entry named without an owner (an older gecko's PREFIX<random>) counts as stale after this
+LEGACY_STALE_SECONDS = 24 * 3600
+
+
+def owner_dead(name: str, prefix: str, folder: Optional[str] = None) -> bool:
+    """True when ``name`` (PREFIX<pid>@<host>-...) belongs to a process of this host that is gone,
+    or (with ``folder``) has no owner in its name and was last changed over a day ago."""
+    if not name.startswith(prefix):
+        return False
+    m = _OWNED.match(name[len(prefix):])
+    if m:
+        return m.group(2) == _host() and not pid_alive(int(m.group(1)))
+    if folder is None:
+        return False
+    try:
+        return time.time() - os.stat(os.path.join(folder, name)).st_mtime > LEGACY_STALE_SECONDS
+    except OSError:
+        return False
 
 
 def clean_stale(folder: str, prefix: str) -> int:
@@ -65,7 +79,7 @@ def clean_stale(folder: str, prefix: str) -> int:
     except OSError:
         return 0
     for name in names:
-        if owner_dead(name, prefix):
+        if owner_dead(name, prefix, folder):
             p = os.path.join(folder, name)
             if os.path.isdir(p) and not os.path.islink(p):
                 shutil.rmtree(p, ignore_errors=True)

@@ -269,14 +269,19 @@ def test_stale_staging_folders_of_dead_runs_are_removed(tmp_path):
     dead = tmp_path / f".gecko-staging-{dead_pid()}@{host}-abcd"
     alive = tmp_path / f".gecko-staging-{os.getpid()}@{host}-abcd"
     other_host = tmp_path / f".gecko-staging-{dead_pid()}@elsewhere-abcd"
-    for p in (dead, alive, other_host):
+    legacy_old = tmp_path / ".gecko-staging-k3j4h5"  # an older gecko's name, no owner in it
+    legacy_new = tmp_path / ".gecko-staging-a1b2c3"
+    for p in (dead, alive, other_host, legacy_old, legacy_new):
         p.mkdir()
         (p / "x.csv").write_text("1")
+    two_days = __import__("time").time() - 2 * 86400
+    os.utime(legacy_old, (two_days, two_days))
     scene = {"study": [{"model": "kendall", "parameters": {"EA": 50.0},
                         "outputs": {"critical_line": {"Ft": {"range": [0, 1], "num": 5}}}}],
              "plot": [{"kind": "critical_line", "name": "k"}]}
     run_scene(scene, tmp_path, draw=False, progress=False)
     assert not dead.exists() and alive.exists() and other_host.exists()
+    assert not legacy_old.exists() and legacy_new.exists()
     assert (tmp_path / "k.csv").is_file()
     assert not [p for p in os.listdir(tmp_path) if p.startswith(".gecko-staging-") and str(os.getpid()) in p
                 and p != alive.name]
@@ -403,3 +408,12 @@ def test_real_ctrl_c_on_gecko_run_exits_130_and_the_next_run_resumes(tmp_path):
                         outputs=["fn0", "ft_max"], progress=False)
     bitwise_equal(t, fresh)
     assert not folder.exists()
+
+
+def test_a_sweep_folder_in_use_by_another_run_is_not_removed(tmp_path):
+    folder = tmp_path / ".gecko-sweep-s.sweep"
+    folder.mkdir()
+    with _locking.FolderLock(str(folder / "sweep-0123.lock")):
+        assert not _locking.remove_unless_locked(folder) and folder.exists()
+    assert _locking.remove_unless_locked(folder) and not folder.exists()
+
