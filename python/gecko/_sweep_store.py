@@ -83,8 +83,8 @@ class SweepStore:
             raise ValueError(f"out = {out!r}: cannot write there: {exc.strerror or exc}") from None
         try:
             os.makedirs(self.dir, exist_ok=True)
-            for name in os.listdir(self.dir):  # temporaries of a killed run: we hold the lock
-                if ".tmp-" in name:
+            for name in os.listdir(self.dir):  # temporaries of a killed run (any gecko): we hold the lock
+                if ".parquet.tmp" in name or ".json.tmp" in name:
                     os.unlink(os.path.join(self.dir, name))
         except OSError as exc:
             self.lock.release()

@@ -259,8 +259,10 @@ def test_lock_and_temporaries_of_a_killed_run_do_not_block(tmp_path):
     (tmp_path / f"sweep-{key_of(d)}.lock").write_text('{"pid": %d, "host": "x"}' % dead_pid())
     tmp = folder / f"chunk-000002.parquet.tmp-{dead_pid()}@h-0000"
     tmp.write_bytes(b"half")
+    old_tmp = folder / "chunk-000002.parquet.tmp4242"  # an older gecko's temporary
+    old_tmp.write_bytes(b"half")
     t, _ = rerun(tmp_path, d, expect_warning=False)
-    assert len(t) == 9 and not tmp.exists()
+    assert len(t) == 9 and not tmp.exists() and not old_tmp.exists()
 
 
 def test_stale_staging_folders_of_dead_runs_are_removed(tmp_path):

@@ -107,6 +107,8 @@ class Work:
 
 
 def _mb(b: int) -> str:
+    if b < 2**20:
+        return f"{b / 2**10:.3g} KiB"
     return f"{b / 2**20:.3g} MiB" if b < 2**30 else f"{b / 2**30:.3g} GiB"
 
 
