@@ -207,8 +207,12 @@ def compute_resumable(store: Optional[SweepStore], i: int, block: np.ndarray, ou
             k += step
     except KeyboardInterrupt:
         if store is not None and pieces:
-            store.save_partial(i, concat(pieces))
-            store.partial_rows = sum(p["status"].size for p in pieces)
+            try:
+                store.save_partial(i, concat(pieces))
+                store.partial_rows = sum(p["status"].size for p in pieces)
+            except OSError as exc:  # a full disk must not hide the interrupt: say so, go on stopping
+                warnings.warn(f"gecko.sweep: the finished part of chunk {i} could not be kept: {exc}",
+                              ResultFileWarning, stacklevel=2)
         raise
     return concat(pieces)
 

@@ -419,3 +419,52 @@ def test_a_sweep_folder_in_use_by_another_run_is_not_removed(tmp_path):
         assert not _locking.remove_unless_locked(folder) and folder.exists()
     assert _locking.remove_unless_locked(folder) and not folder.exists()
 
+
+def test_disk_full_while_saving_the_finished_part_at_ctrl_c_still_reports_the_interrupt(tmp_path, monkeypatch):
+    monkeypatch.setattr(design_sweep, "_BLOCK_PER_THREAD", 2)
+    real = design_sweep.compute_chunk
+    calls = []
+
+    def second_block_interrupted(block, outs, threads):
+        calls.append(1)
+        if len(calls) == 2:
+            raise KeyboardInterrupt
+        return real(block, outs, threads)
+
+    def full(table, where, *a, **k):
+        raise OSError(errno.ENOSPC, "No space left on device")
+    monkeypatch.setattr(design_sweep, "compute_chunk", second_block_interrupted)
+    monkeypatch.setattr(pq, "write_table", full)
+    with pytest.warns(ResultFileWarning, match="could not be kept.*no space left"):
+        with pytest.raises(KeyboardInterrupt, match="after 0 of 9 designs"):
+            gecko.sweep(designs(), outputs=OUTS, chunk_size=5, out=tmp_path, threads=1, progress=False)
+    assert not [n for n in os.listdir(tmp_path / f"sweep-{key_of(designs(), chunk=5)}")]
+
+
+def test_disk_full_while_writing_a_manifest_leaves_no_unverified_file(tmp_path, monkeypatch):
+    real = _integrity.write_text_atomic
+
+    def full(path, text):
+        raise OSError(errno.ENOSPC, "No space left on device")
+    monkeypatch.setattr(_integrity, "write_text_atomic", full)
+    with pytest.raises(OSError, match="no space left"):
+        gecko.sweep(designs(), outputs=OUTS, chunk_size=3, out=tmp_path, progress=False)
+    assert os.listdir(tmp_path / f"sweep-{key_of(designs())}") == []
+    monkeypatch.setattr(_integrity, "write_text_atomic", real)
+    t, _ = rerun(tmp_path, designs(), expect_warning=False)
+    assert t.attrs["sweep"]["chunks_computed"] == 3
+
+
+def test_read_only_out_for_a_sweep_is_a_value_error(tmp_path, monkeypatch):
+    ro = tmp_path / "ro"
+    ro.mkdir()
+    real_open = os.open
+
+    def read_only(path, flags, *a):
+        if str(path).startswith(str(ro)) and flags & os.O_CREAT:
+            raise PermissionError(errno.EACCES, "Permission denied", path)
+        return real_open(path, flags, *a)
+    monkeypatch.setattr(_locking.os, "open", read_only)
+    with pytest.raises(ValueError, match="out = .*cannot write there: Permission denied"):
+        gecko.sweep(designs(), outputs=OUTS, out=ro, progress=False)
+
