@@ -34,6 +34,11 @@ def error_code(errors: str) -> int:
         raise ValueError(f"errors = {errors!r} is not allowed: need 'raise' or 'nan'") from None
 
 
+class InputError(TypeError, ValueError):
+    """An input of a type that a conversion would reinterpret (complex, None, text, dates,
+    objects): a TypeError, and a ValueError like every other bad input of gecko."""
+
+
 def _where(shape, flat: int) -> str:
     idx = np.unravel_index(flat, shape) if shape else ()
     return f" (at index {tuple(int(i) for i in idx)})" if len(shape) > 1 else (f" (at index {int(idx[0])})"
@@ -48,13 +53,13 @@ def _is_real_scalar(v) -> bool:
 def real_array(x, name: str) -> np.ndarray:
     """``x`` as a float64 array, refusing what a conversion would silently reinterpret: complex
     numbers (the imaginary part dropped), None and other objects, strings, dates and durations,
-    and masked arrays (the mask dropped). TypeError (ValueError for a masked array) naming the
-    argument and, for one bad element, its index."""
+    and masked arrays (the mask dropped). InputError (a TypeError and a ValueError; ValueError for a
+    masked array) naming the argument and, for one bad element, its index."""
     if np.ma.isMaskedArray(x):
         raise ValueError(f"{name}: a masked array is not accepted (its mask would be ignored); pass "
                          f"{name}.filled(np.nan) or {name}.compressed()")
     if x is None:
-        raise TypeError(f"{name} = None is not allowed: need real numbers")
+        raise InputError(f"{name} = None is not allowed: need real numbers")
     a = np.asarray(x)
     kind = a.dtype.kind
     if kind in "biuf":
@@ -62,15 +67,15 @@ def real_array(x, name: str) -> np.ndarray:
     if kind == "c":
         bad = np.flatnonzero(np.ravel(a.imag) != 0)
         at = _where(a.shape, int(bad[0])) if bad.size else ""
-        raise TypeError(f"{name}: complex numbers are not allowed{at}: need real numbers")
+        raise InputError(f"{name}: complex numbers are not allowed{at}: need real numbers")
     if kind in "mM":
-        raise TypeError(f"{name}: dates and durations ({a.dtype}) are not allowed: need real numbers")
+        raise InputError(f"{name}: dates and durations ({a.dtype}) are not allowed: need real numbers")
     if kind in "US":
-        raise TypeError(f"{name}: text ({a.dtype}) is not allowed: need real numbers")
+        raise InputError(f"{name}: text ({a.dtype}) is not allowed: need real numbers")
     flat = a.reshape(-1)
     for i, v in enumerate(flat):  # object arrays: name the first element that is not a real number
         if not _is_real_scalar(v):
-            raise TypeError(f"{name}: {v!r} ({type(v).__name__}) is not allowed{_where(a.shape, i)}: "
+            raise InputError(f"{name}: {v!r} ({type(v).__name__}) is not allowed{_where(a.shape, i)}: "
                             "need real numbers")
     return a.astype(np.float64)
 

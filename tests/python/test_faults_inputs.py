@@ -130,3 +130,15 @@ def test_sweep_refuses_design_tables_a_conversion_would_reinterpret(table, why):
         else:
             with pytest.raises(TypeError, match=why):
                 gecko.sweep(df, outputs=["ft_max"], progress=False)
+
+
+def test_refused_types_are_value_errors_too(tmp_path):
+    with pytest.raises(ValueError, match="Ft: complex"):
+        seta.kendall_fn(1j, 50.0, 1.0)
+    pytest.importorskip("pandas")
+    from gecko.scene import SceneError, run_scene
+    table = tmp_path / "designs.csv"
+    table.write_text("EI1,EI2\n5,2\nfive,2\n")
+    scene = {"sweep": {"designs": "table", "table": str(table), "outputs": ["ft_max"]}}
+    with pytest.raises(SceneError, match=r"sweep: designs\['EI1'\]: '5' \(str\) is not allowed \(at index 0\)"):
+        run_scene(scene, progress=False)

@@ -569,7 +569,7 @@ def _run_sweep(sc: Scene, out: Optional[os.PathLike], threads: int, progress: Op
                      chunk_size=spec.chunk_size, threads=threads,
                      executor=None if spec.executor == "threads" else spec.executor,
                      connect_timeout=spec.connect_timeout, errors=spec.errors, progress=progress)
-    except (ValueError, TypeError) as exc:  # a design the kernels refuse, a bad table: name the section
+    except ValueError as exc:  # a design the kernels refuse, a bad table: name the section
         raise SceneError(str(exc), key="sweep", source=sc.source) from None
 
 
