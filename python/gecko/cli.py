@@ -118,7 +118,8 @@ def _parser() -> argparse.ArgumentParser:
                         help="scale every range's number of points by R (e.g. 0.25 for a quick look); "
                              "default: the scene's own, or $GECKO_RESOLUTION")
         sp.add_argument("--quiet", "-q", action="store_true", help="no progress bar, no summary")
-        sp.add_argument("--threads", type=_threads_arg, metavar="N", help="threads for batch kernels (default: up to 4)")
+        sp.add_argument("--threads", type=_threads_arg, metavar="N",
+                        help="threads for batch kernels (default: up to 4)")
 
     r = sub.add_parser("run", help="run a scene: compute, write CSV and figures",
                        description="Run SCENE.toml and write its plots (PNG, SVG on request) and CSV files to DIR.")
