@@ -30,7 +30,7 @@ def test_help_documents_everything(capsys):
 
 def test_validate_ok_and_bad(tmp_path, capsys):
     assert main(["validate", str(DEMO)]) == 0
-    assert "ok (3 studies, 3 designs, 1 plots, work: 3 designs, about " in capsys.readouterr().out
+    assert "ok (3 studies, 3 designs, 1 plots, work: 3 designs, 1203 points, about " in capsys.readouterr().out
     bad = tmp_path / "bad.toml"
     bad.write_text('[[study]]\nmodel = "two_level_seta"\nparameters = { alpha1 = 2.0 }\n')
     assert main(["validate", str(DEMO), str(bad)]) == 2

@@ -79,7 +79,7 @@ def test_random_sample_scaled_by_resolution_is_refused(tmp_path):
 def test_limits_are_configurable_and_validated(tmp_path, monkeypatch, capsys):
     p = scene_file(tmp_path, GRID_1E9.replace("num = 1000}", "num = 10}"))  # 1000 designs
     assert main(["validate", p]) == 0
-    assert "work: 1000 designs" in capsys.readouterr().out
+    assert "work: 1000 designs, 1000 points" in capsys.readouterr().out
     monkeypatch.setenv("GECKO_MAX_DESIGNS", "999")
     assert main(["validate", p]) == 2
     assert "1000 designs, above the limit of 999" in capsys.readouterr().err

@@ -100,10 +100,11 @@ def check_name(name, key: str, what: str = "name") -> str:
 @dataclass
 class Work:
     designs: int
+    points: int          # states solved or evaluated: designs x grid points, one per sweep design
     memory_bytes: int
 
     def describe(self) -> str:
-        return f"{self.designs} designs, about {_mb(self.memory_bytes)} of results"
+        return f"{self.designs} designs, {self.points} points, about {_mb(self.memory_bytes)} of results"
 
 
 def _mb(b: int) -> str:
@@ -113,33 +114,37 @@ def _mb(b: int) -> str:
 
 
 def estimate(scene) -> Work:
-    designs, mem = 0, 0
+    """Designs, points and bytes of results a scene asks for (no grid or table is built)."""
+    from .schema import DEFAULT_GRIDS
+    designs, points, mem = 0, 0, 0
     for st in scene.studies:
         n = len(st.points)
         designs += n
-        per = 0
+        per_points = 0
         for name, spec in st.outputs.items():
             g = spec.options.get("grid") if hasattr(spec, "options") else None
-            num = _grid_size(g) if g is not None else 100
-            per += 4 * 8 * num + 256
-        mem += n * max(per, 256)
+            g = g if g is not None else DEFAULT_GRIDS.get(name)
+            per_points += 1 if g is None else _grid_size(g, scene.resolution)
+        points += n * per_points
+        mem += n * (4 * 8 * per_points + 256)  # Ft, Fn, theta, status per point; a row per design
     sw = scene.sweep
     if sw is not None:
         n = sw.size if sw.designs != "table" else _table_rows(sw.table)
         designs += n
-        per = 3 * 8 * (9 + len(sw.outputs) + 1)
+        points += n
+        per = 3 * 8 * (9 + len(sw.outputs) + 1)  # the design table, the chunks, the final table
         if sw.designs == "grid":  # the combinations as Python tuples while the grid is built
             per += 64 + 32 * len(sw.grid)
         mem += n * per
-    return Work(designs, mem)
+    return Work(designs, points, mem)
 
 
-def _grid_size(g) -> int:
+def _grid_size(g, res: float) -> int:
     if isinstance(g, list):
         return len(g)
     if isinstance(g, dict):
-        if "num" in g and isinstance(g["num"], (int, float)) and math.isfinite(g["num"]):
-            return int(g["num"])
+        if isinstance(g.get("num"), (int, float)) and math.isfinite(g["num"]):
+            return max(2, int(round(g["num"] * res)))  # as schema.eval_grid scales a range
         if isinstance(g.get("values"), list):
             return len(g["values"])
     return 100
