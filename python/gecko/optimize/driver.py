@@ -158,6 +158,9 @@ def optimize_seta(objective, bounds: dict, constraints=(), *, base=None, starts:
         raise ValueError(f"starts = {starts!r}: need an integer in [1, 1024]")
     if not (isinstance(maxiter, (int, np.integer)) and 1 <= maxiter <= 10000):
         raise ValueError(f"maxiter = {maxiter!r}: need an integer in [1, 10000]")
+    from .._vectorize import check_tolerance
+    tol = check_tolerance(tol, "tol", allow_none=False)
+    feasibility_tol = check_tolerance(feasibility_tol, "feasibility_tol", allow_none=False)
     if not (isinstance(quadrature_nodes, (int, np.integer)) and 4 <= quadrature_nodes <= 400):
         raise ValueError(f"quadrature_nodes = {quadrature_nodes!r}: need an integer in [4, 400]")
     base_d = _base_dict(base)

@@ -122,7 +122,8 @@ def _name(v, key: str, default: str) -> str:
         return default
     if not isinstance(v, str) or not v or v[0] == "." or not all(c.isalnum() or c in "-_." for c in v):
         raise SceneError(f"{v!r} is not allowed: need a file-name stem of letters, digits, '-', '_', '.'", key=key)
-    return v
+    from .limits import check_name
+    return check_name(v, key)
 
 
 def _fixed(table, key: str, allowed) -> Dict[str, float]:

@@ -11,7 +11,6 @@ import io
 import math
 import os
 import shutil
-import tempfile
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -506,6 +505,8 @@ def run_scene(scene, out: Optional[os.PathLike] = None, *, formats: Optional[Seq
     t0 = time.perf_counter()
     sc = load_scene(scene, resolution=resolution)
     plan = plan_scene(sc)
+    if out is not None:  # before computing: an unusable folder is found out now, not after the work
+        _check_out(sc, Path(out))
     cache = cache if cache is not None else Cache()
     threads = threads or min(4, os.cpu_count() or 1)
     total = sum(s.size for s in plan.steps) + (len(sc.plots) if out is not None and draw else 0)
@@ -597,12 +598,21 @@ def _write_sections(sc: Scene, result: RunResult, staging: Path, formats: Sequen
     return names
 
 
-def _write(sc: Scene, result: RunResult, out: Path, extra_formats, draw: bool, bar: Progress) -> List[Path]:
+def _check_out(sc: Scene, out: Path) -> None:
+    """SceneError (a bad command line or scene: exit status 2) when ``out`` cannot be created or
+    written to."""
+    from .._integrity import check_writable
     try:
-        out.mkdir(parents=True, exist_ok=True)
+        check_writable(str(out))
     except OSError as exc:
-        raise SceneError(f"cannot create the output folder {str(out)!r}: {exc.strerror or exc}", source=sc.source) from None
-    staging = Path(tempfile.mkdtemp(prefix=".gecko-staging-", dir=out))
+        raise SceneError(f"cannot write to the output folder {str(out)!r}: {exc.strerror or exc}",
+                         source=sc.source) from None
+
+
+def _write(sc: Scene, result: RunResult, out: Path, extra_formats, draw: bool, bar: Progress) -> List[Path]:
+    _check_out(sc, out)
+    from .._locking import make_staging
+    staging = Path(make_staging(str(out), ".gecko-staging-"))  # also removes those of killed runs
     try:
         names: List[str] = []
         for p in sc.plots:
@@ -628,7 +638,8 @@ def _write(sc: Scene, result: RunResult, out: Path, extra_formats, draw: bool, b
             os.replace(staging / n, out / n)
             final.append(out / n)
         if sc.sweep is not None:  # the table is in place: its chunks are no longer needed
-            shutil.rmtree(_sweep_folder(sc, out), ignore_errors=True)
+            from .._locking import remove_unless_locked
+            remove_unless_locked(_sweep_folder(sc, out))
         return final
     finally:
         shutil.rmtree(staging, ignore_errors=True)

@@ -216,11 +216,15 @@ def load_scene(scene, *, resolution: Optional[float] = None) -> Scene:
 
 
 def parse_scene(data: dict, source: str = "<dict>", *, resolution: Optional[float] = None) -> Scene:
+    from .limits import check_file_names, check_nesting, check_work
     try:
+        check_nesting(data)
         scene = _parse(data, resolution, None if source == "<dict>" else str(Path(source).resolve().parent))
+        scene.source = source
+        check_file_names(scene)
+        check_work(scene)  # before anything is computed (gecko.scene.limits)
     except SceneError as err:
         raise err.at(source=source) from None
-    scene.source = source
     return scene
 
 
@@ -295,8 +299,8 @@ def _parse_study(s, key: str, res: float) -> Study:
         raise SceneError(f"unknown model {model_name!r}; allowed models: " + ", ".join(MODELS), key=f"{key}.model")
     model = MODELS[model_name]
     name = s.get("name", model_name)
-    if not isinstance(name, str) or not name or any(c in name for c in "/\\\0"):
-        raise SceneError(f"need a non-empty string without slashes; got {name!r}", key=f"{key}.name")
+    from .limits import check_name
+    check_name(name, f"{key}.name", "study name")
     combine = s.get("combine", "cross")
     if combine not in ("cross", "zip"):
         raise SceneError(f"{combine!r} is not allowed: need 'cross' (every combination) or 'zip' (pairwise)",
@@ -566,6 +570,8 @@ def _parse_plot(p, key: str, studies: List[Study]) -> PlotSpec:
     if not isinstance(name, str) or not name or not all(c.isalnum() or c in "-_." for c in name) or name[0] == ".":
         raise SceneError(f"{name!r} is not allowed: need a file-name stem of letters, digits, '-', '_', '.'",
                          key=f"{key}.name")
+    from .limits import check_name
+    check_name(name, f"{key}.name", "plot name")
     wanted = PLOT_KINDS[kind]
     names = p.get("studies")
     if names is None:
