@@ -31,7 +31,6 @@ COMMANDS = {
     "friction_python.md": "python3 bench/friction/bench_steady_sliding.py --out bench/results",
     "scenes.md": "python3 bench/scenes/bench_scenes.py",
     "scaling.md": "bench/scaling/run.sh",
-    "stress.md": "python3 bench/stress/report.py bench/stress/stress_10000.npz",
 }
 RENDERED = {"tradeoff.md", "elliptic.md", "seta.md", "scaling.md"}
 

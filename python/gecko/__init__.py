@@ -24,9 +24,9 @@ from .friction import *  # noqa: F401,F403
 from .scene import SceneError, load_scene, run_scene, validate_scene
 from . import design_sweep as _design_sweep
 from .design_sweep import *  # noqa: F401,F403
-from . import design_optimize as _design_optimize
-from .design_optimize import *  # noqa: F401,F403
+from . import optimize as _optimize
+from .optimize import *  # noqa: F401,F403
 
 __all__ = ["__version__", *_elliptic.__all__, *_seta.__all__, *_friction.__all__,
-           *_design_sweep.__all__, *_design_optimize.__all__,
+           *_design_sweep.__all__, *_optimize.__all__,
            "SceneError", "load_scene", "run_scene", "validate_scene"]

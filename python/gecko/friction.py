@@ -30,6 +30,10 @@ import numpy as np
 
 from . import _core
 from ._vectorize import error_code as _error_code, flat_args as _flat_args, shaped as _shaped
+from ._vectorize import check_count as _check_count, real_array as _real_array
+
+#: outcome of a Levenberg-Marquardt fit, an IntEnum bound from C++ (gecko/friction/fit.hpp)
+FitStatus = _core.FitStatus
 
 __all__ = [
     # beam
@@ -41,20 +45,20 @@ __all__ = [
     "viscoelastic_detachment", "eyring_detachment", "ViscoelasticDetachment", "EyringDetachment",
     "detachment_stretch", "resonant_frequency",
     # steady sliding
-    "SlidingModel", "FIG6_VISCOELASTIC", "FIG6_PLASTIC", "steady_sliding", "SteadySliding",
+    "SlidingModel", "FIG6_VISCOELASTIC", "FIG6_PLASTIC", "steady_sliding", "SteadySliding", "FitStatus",
     # beyond the paper
     "simulate_spatulae", "SpatulaSimulation", "fit_steady_sliding", "SteadySlidingFit",
 ]
 
 def _matrix(K, name: str = "K") -> np.ndarray:
-    K = np.asarray(K, dtype=np.float64)
+    K = _real_array(K, name)
     if K.shape != (2, 2):
         raise ValueError(f"{name} must be a 2x2 matrix, got shape {K.shape}")
     return np.ascontiguousarray(K).reshape(-1)
 
 
 def _scalar(x, name: str) -> float:
-    a = np.asarray(x, dtype=np.float64)
+    a = _real_array(x, name)
     if a.shape != ():
         raise ValueError(f"{name} must be a scalar, got shape {a.shape}")
     return float(a)
@@ -104,7 +108,7 @@ def parabolic_beam_rigidity(L=1.0, EI=1.0, *, errors: str = "raise"):
 
 def rigidity(C, *, errors: str = "raise"):
     """K = C**-1 of symmetric positive definite 2x2 compliances C (shape (..., 2, 2))."""
-    C = np.asarray(C, dtype=np.float64)
+    C = _real_array(C, "C")
     if C.shape[-2:] != (2, 2):
         raise ValueError(f"C must have shape (..., 2, 2), got {C.shape}")
     out = _core.rigidity(np.ascontiguousarray(C).reshape(-1), _error_code(errors))
@@ -151,9 +155,8 @@ def force_trace(K=None, path=FIG4_SPATULA_PATH, *, times=None, samples_per_segme
     ``samples_per_segment`` points per leg plus every vertex exactly.
     """
     K = paper_rigidity() if K is None else K
-    t, d_par, d_perp = (np.ascontiguousarray(np.asarray(a, dtype=np.float64).reshape(-1))
-                        for a in path)
-    tt = None if times is None else np.ascontiguousarray(np.asarray(times, dtype=np.float64).reshape(-1))
+    t, d_par, d_perp = (np.ascontiguousarray(_real_array(a, f"path[{i}]").reshape(-1)) for i, a in enumerate(path))
+    tt = None if times is None else np.ascontiguousarray(_real_array(times, "times").reshape(-1))
     r = _core.force_trace(_matrix(K), t, d_par, d_perp, tt, int(samples_per_segment))
     return ForceTrace(r["t"], r["d_par"], r["d_perp"], r["f_par"], r["f_perp"])
 
@@ -358,6 +361,11 @@ class SteadySlidingFit(NamedTuple):
     iterations: int
     status: str                   # "converged", "max_iterations" or "singular"
 
+    @property
+    def status_code(self) -> "FitStatus":
+        """``status`` as a :class:`FitStatus` member (code compares these, not the text)."""
+        return FitStatus[self.status]
+
 
 def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC, *,
                        fit_f_par1: bool = True, fit_f_perp1: bool = True,
@@ -379,7 +387,7 @@ def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC
     r = _core.fit_steady_sliding(v, fp, fq, float(guess.N), _matrix(guess.K), float(guess.f_par1),
                                  float(guess.f_perp1), kind, float(law.G0), float(law.V_star), n,
                                  bool(fit_f_par1), bool(fit_f_perp1), bool(fit_coupling),
-                                 int(max_iterations))
+                                 _check_count(max_iterations, "max_iterations"))
     values = dict(zip(r["names"], r["values"]))
     if kind == 0:
         new_law = ViscoelasticDetachment(values["G0"], values["V_star"], values["n"])

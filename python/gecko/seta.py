@@ -29,11 +29,23 @@ import numpy as np
 
 from . import _core
 from ._vectorize import error_code as _error_code, vectorised as _vectorised
+from ._vectorize import check_count as _check_count, check_tolerance as _check_tolerance
+from ._vectorize import real_array as _real_array
 
 __all__ = [
     "TwoLevelSeta", "SingleFiber", "CriticalLine", "SetaCharacteristics", "kendall_fn", "rivlin_fn",
-    "critical_line_batch", "STATUS",
+    "critical_line_batch", "STATUS", "DESIGN_FIELDS", "SetaDesign", "CriticalStatus", "LineEnd",
+    "MinimumStatus",
 ]
+
+# The domain comes from C++ (src/bindings/seta_types.cpp): the design type with its fields, defaults
+# and admissible ranges, and the status codes as IntEnums (equal to the plain integers in arrays).
+SetaDesign = _core.SetaDesign
+#: the nine design fields in the order of every flat design array
+DESIGN_FIELDS = tuple(SetaDesign.fields)
+CriticalStatus = _core.CriticalStatus
+LineEnd = _core.LineEnd
+MinimumStatus = _core.MinimumStatus
 
 STATUS = {
     0: "converged",
@@ -65,8 +77,8 @@ _MIN_STATUS = {
     4: "not_certified",     # a minimum could not be refined or verified: min_fn etc. are NaN
 }
 
-def _flat(x):
-    a = np.asarray(x, dtype=np.float64)
+def _flat(x, name="Ft"):
+    a = _real_array(x, name)
     return a.shape, np.ascontiguousarray(a).reshape(-1)
 
 
@@ -92,6 +104,7 @@ class CriticalLine:
     folds: list = field(default_factory=list)
     end: Optional[str] = None
     branch: Optional[np.ndarray] = None
+    end_code: Optional[LineEnd] = None   # ``end`` as a LineEnd member (code compares these)
 
     def __len__(self) -> int:
         return int(np.size(self.Ft))
@@ -119,6 +132,8 @@ class SetaCharacteristics:
     small_slope_k: float
     small_contact_length: float
     small_non_sticky: bool
+    end_code: Optional[LineEnd] = None              # ``end`` as a LineEnd member
+    min_status_code: Optional[MinimumStatus] = None  # ``min_status`` as a MinimumStatus member
 
 
 class TwoLevelSeta:
@@ -129,7 +144,7 @@ class TwoLevelSeta:
     alpha1 + alpha2 < pi/2; w: work of adhesion. Invalid values raise ``ValueError`` at construction.
     """
 
-    _FIELDS = ("EI1", "EI2", "EA1", "EA2", "l1", "l2", "alpha1", "alpha2", "w")
+    _FIELDS = DESIGN_FIELDS
 
     def __init__(self, EI1: float = 5.0, EI2: float = 2.0, EA1: float = math.inf, EA2: float = 50.0,
                  l1: float = 1.0, l2: float = 0.1, alpha1: float = math.pi / 6,
@@ -173,13 +188,12 @@ class TwoLevelSeta:
                                 turning_points_beam=d["turning_points_beam"],
                                 turning_points_spatula=d["turning_points_spatula"],
                                 folds=list(d["folds"]), end=_LINE_END.get(d["end"], str(d["end"])),
-                                branch=d["branch"])
+                                branch=d["branch"], end_code=LineEnd(d["end"]))
         if not resolve_nodes:
             raise ValueError("resolve_nodes=False applies to the traced line only (critical_line() without Ft); "
                              "states at requested Ft are always solved to the tolerance")
         shape, flat = _flat(Ft)
-        d = _core.seta_critical_line_at(params, flat, _error_code(errors),
-                                        math.nan if tolerance is None else float(tolerance))
+        d = _core.seta_critical_line_at(params, flat, _error_code(errors), _check_tolerance(tolerance))
 
         def shaped(a):
             return a.reshape(shape)
@@ -194,7 +208,8 @@ class TwoLevelSeta:
     def solve(self, Ft: float, guess=None, *, tolerance: Optional[float] = None, max_iterations: int = 40) -> dict:
         """One critical state at ``Ft``. ``guess``: (Fn, theta_joint) or (Fn, theta_joint,
         theta_rate_joint, theta_rate_base); without it the line is followed from Ft = 0."""
-        tol = math.nan if tolerance is None else float(tolerance)
+        tol = _check_tolerance(tolerance)
+        max_iterations = _check_count(max_iterations, "max_iterations")
         if guess is None:
             return _core.seta_solve(self._params(), float(Ft), tolerance=tol, max_iterations=max_iterations)
         g = [float(x) for x in guess] + [math.nan] * (4 - len(guess))
@@ -207,6 +222,7 @@ class TwoLevelSeta:
         ``slope_at_min_fn`` ~ 0; "not_certified": NaN values, never a traced node's Fn)."""
         d = _core.seta_characteristics(self._params(), math.nan if ft_end is None else float(ft_end))
         d = dict(d)
+        d["end_code"], d["min_status_code"] = LineEnd(d["end"]), MinimumStatus(d["min_status"])
         d["end"] = _LINE_END.get(d["end"], str(d["end"]))
         d["min_status"] = _MIN_STATUS.get(d["min_status"], str(d["min_status"]))
         d["folds"] = list(d["folds"])
@@ -217,7 +233,7 @@ class TwoLevelSeta:
         differentiation of the converged residual: ``dFn`` and ``dtheta_joint`` of shape
         (len(Ft), 9), columns in the order of ``TwoLevelSeta._FIELDS`` (EI1, EI2, EA1, EA2, l1, l2,
         alpha1, alpha2, w); Ft held fixed; NaN rows where ``status != 0``."""
-        ft = np.ascontiguousarray(np.atleast_1d(np.asarray(Ft, dtype=np.float64)).reshape(-1))
+        ft = np.ascontiguousarray(np.atleast_1d(_real_array(Ft, "Ft")).reshape(-1))
         d = dict(_core.seta_sensitivities(self._params(), ft))
         d["parameters"] = list(self._FIELDS)
         return d
@@ -268,8 +284,7 @@ class SingleFiber:
         """The fiber's critical line at ``Ft`` (any shape), followed from Ft = 0; ``theta_joint`` is NaN
         (no joint) and the fiber's turning points are in ``turning_points_beam``."""
         shape, flat = _flat(Ft)
-        d = _core.fiber_critical_line_at(self._params(), flat, _error_code(errors),
-                                         math.nan if tolerance is None else float(tolerance))
+        d = _core.fiber_critical_line_at(self._params(), flat, _error_code(errors), _check_tolerance(tolerance))
         return CriticalLine(Ft=flat.reshape(shape), **{k: v.reshape(shape) for k, v in d.items()})
 
 
@@ -286,10 +301,16 @@ def critical_line_batch(designs, Ft, *, threads: int = 1, errors: str = "raise",
     if len(designs) and isinstance(designs[0], TwoLevelSeta):
         arr = np.stack([d._params() for d in designs])
     else:
-        arr = np.asarray(designs, dtype=np.float64).reshape(-1, 9)
-    ft = np.ascontiguousarray(np.asarray(Ft, dtype=np.float64).reshape(-1))
-    d = _core.seta_batch(np.ascontiguousarray(arr.reshape(-1)), ft, _error_code(errors), int(threads),
-                         math.nan if tolerance is None else float(tolerance))
+        arr = _real_array(designs, "designs")
+        if arr.ndim == 1 and arr.size == 9:  # one design
+            arr = arr.reshape(1, 9)
+        if arr.ndim != 2 or arr.shape[1] != 9:  # never reinterpret a table of another width
+            raise ValueError(f"designs: need a table of width 9 (EI1, EI2, EA1, EA2, l1, l2, alpha1, alpha2, w), "
+                             f"one row per design; got shape {arr.shape} (width "
+                             f"{arr.shape[-1] if arr.ndim else 0})")
+    ft = np.ascontiguousarray(_real_array(Ft, "Ft").reshape(-1))
+    d = _core.seta_batch(np.ascontiguousarray(arr.reshape(-1)), ft, _error_code(errors),
+                         _check_count(threads, "threads", 4096), _check_tolerance(tolerance))
     shape = (arr.shape[0], ft.size)
 
     def shaped(a):

@@ -71,21 +71,32 @@ class Model:
 
 PI6 = math.pi / 6
 
-SETA_PARAMS = (
-    Param("EI1", 5.0, "bending stiffness of the beam (level 1)", check=_positive, symbol="EI₁"),
-    Param("EI2", 2.0, "bending stiffness of the spatula (level 2)", check=_positive, symbol="EI₂"),
-    Param("EA1", math.inf, "axial stiffness of the beam (inf: inextensible)", check=_positive_or_inf,
-          symbol="EA₁"),
-    Param("EA2", 50.0, "axial stiffness of the spatula (inf: inextensible)", check=_positive_or_inf,
-          symbol="EA₂"),
-    Param("l1", 1.0, "length of the beam", check=_positive, symbol="l₁"),
-    Param("l2", 0.1, "length of the spatula", check=_positive, symbol="l₂"),
-    Param("alpha1", PI6, "base angle of the beam from the substrate normal", check=_open_right_angle,
-          symbol="α₁"),
-    Param("alpha2", PI6, "kink of the spatula at the joint (alpha1 + alpha2 < pi/2)",
-          check=_half_open_right_angle, symbol="α₂"),
-    Param("w", 1.0, "work of adhesion per unit length", check=_positive, symbol="w"),
-)
+def _seta_check(name: str):
+    """The scene's range check of a design field, from its admissible range in C++."""
+    from ..seta import SetaDesign
+    lo, hi, lo_incl, inf_ok, _ = SetaDesign.domain[name]
+    if inf_ok:
+        return _positive_or_inf
+    if hi == math.inf:
+        return _nonnegative if lo_incl else _positive
+    return _half_open_right_angle if lo_incl else _open_right_angle
+
+
+def _unicode_symbol(name: str) -> str:
+    """How a legend writes a design field: EI1 -> EI₁, alpha2 -> α₂."""
+    sub = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+    return name.replace("alpha", "α").translate(sub)
+
+
+def _seta_params() -> Tuple[Param, ...]:
+    from ..designs import DEFAULTS, FIELDS
+    from ..seta import SetaDesign
+    return tuple(Param(f, DEFAULTS[f], SetaDesign.descriptions[f], check=_seta_check(f),
+                       symbol=_unicode_symbol(f)) for f in FIELDS)
+
+
+#: the two-level seta's parameters: the bound C++ design type's fields, defaults, ranges and texts
+SETA_PARAMS = _seta_params()
 
 #: characteristic quantities of the two-level seta; "small_*" are the linear theory (eqs 7, 18-22)
 SETA_EXACT = ("fn0", "slope_k", "abs_slope_k", "inv_abs_k", "max_pull_off", "ft_at_max_pull_off", "min_fn",

@@ -134,7 +134,8 @@ def render_sweep(scene, table, folder: Path, formats: Sequence[str]) -> List[str
     coloured by a third column when asked."""
     spec = scene.sweep
     p = spec.plot
-    ok = table[table["status"] == 0]
+    from ..seta import CriticalStatus
+    ok = table[table["status"] == CriticalStatus.converged]
     fig = _figure((6.4, 4.8))
     ax = fig.add_subplot(1, 1, 1)
     kw = dict(s=6, linewidths=0)

@@ -11,7 +11,6 @@ import io
 import math
 import os
 import shutil
-import tempfile
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -19,12 +18,15 @@ from typing import Any, Dict, List, Optional, Sequence
 
 import numpy as np
 
+from ..progress import Progress  # noqa: F401  (moved to gecko.progress; old name kept)
+from ..seta import DESIGN_FIELDS, CriticalStatus
 from .errors import SceneError
 from .models import CHARACTERISTIC_LABELS
 from .planner import Plan, Step, plan_scene
 from .schema import DEFAULT_GRIDS, Point, Scene, Study, eval_grid, load_scene
 
-SETA_FIELDS = ("EI1", "EI2", "EA1", "EA2", "l1", "l2", "alpha1", "alpha2", "w")
+#: the two-level seta design fields (from the bound C++ design type)
+SETA_FIELDS = DESIGN_FIELDS
 
 
 # ---- results ------------------------------------------------------------------------------------
@@ -105,35 +107,7 @@ class RunResult:
     files: List[Path] = field(default_factory=list)
     seconds: float = 0.0
     sweep: Any = None                       # the [sweep] table (a pandas DataFrame)
-    optimum: Any = None                     # the [optimize] result (gecko.design_optimize.SetaOptimum)
-
-
-class Progress:
-    """A one-line progress bar on a terminal, shown only for work longer than ``delay`` seconds."""
-
-    def __init__(self, total: int, label: str = "", stream=None, enabled: Optional[bool] = None,
-                 delay: float = 1.0):
-        import sys
-        self.stream = stream if stream is not None else sys.stderr
-        if enabled is None:
-            enabled = bool(getattr(self.stream, "isatty", lambda: False)())
-        self.enabled, self.total, self.label, self.delay = enabled, max(total, 1), label, delay
-        self.done, self.start, self.shown = 0, time.monotonic(), False
-
-    def advance(self, n: int = 1, what: str = "") -> None:
-        self.done += n
-        if not self.enabled or time.monotonic() - self.start < self.delay:
-            return
-        frac = min(self.done / self.total, 1.0)
-        bar = "#" * int(30 * frac) + "." * (30 - int(30 * frac))
-        self.stream.write(f"\r{self.label} [{bar}] {self.done}/{self.total} {what[:30]:<30}")
-        self.stream.flush()
-        self.shown = True
-
-    def close(self) -> None:
-        if self.shown:
-            self.stream.write("\r" + " " * 100 + "\r")
-            self.stream.flush()
+    optimum: Any = None                     # the [optimize] result (gecko.optimize.SetaOptimum)
 
 
 class Cache(dict):
@@ -256,7 +230,8 @@ class _Executor:
                     Fn = rivlin_fn(g, p.values["w"], errors="nan")
                 Fn = np.atleast_1d(np.asarray(Fn, dtype=np.float64))
                 self.data[st.name][i]["critical_line"] = {"Ft": g, "Fn": Fn,
-                                                          "status": np.where(np.isfinite(Fn), 0, 5)}
+                                                          "status": np.where(np.isfinite(Fn), CriticalStatus.converged,
+                                                                             CriticalStatus.invalid_input)}
                 self.progress.advance(1, st.name)
 
     def k_fn0_from_line(self, st: Study, step: Step) -> None:
@@ -436,8 +411,14 @@ def _peel_characteristics(model: str, v: Dict[str, float]) -> Dict[str, float]:
 
 # ---- curves of each plot -------------------------------------------------------------------------
 
-_TEX = {"EI1": "EI_1", "EI2": "EI_2", "EA1": "EA_1", "EA2": "EA_2", "l1": "l_1", "l2": "l_2",
-        "alpha1": "\\alpha_1", "alpha2": "\\alpha_2", "w": "w"}
+def _tex_symbol(name: str) -> str:
+    """TeX of a design field: EI1 -> EI_1, alpha2 -> \\alpha_2."""
+    head, digit = (name[:-1], name[-1]) if name[-1:].isdigit() else (name, "")
+    head = "\\" + head if head == "alpha" else head
+    return f"{head}_{digit}" if digit else head
+
+
+_TEX = {f: _tex_symbol(f) for f in SETA_FIELDS}
 _ROLE = {"two_level_seta": "seta", "single_fiber": "fiber", "kendall": "kendall", "rivlin": "rivlin"}
 
 
@@ -631,6 +612,8 @@ def run_scene(scene, out: Optional[os.PathLike] = None, *, formats: Optional[Seq
     t0 = time.perf_counter()
     sc = load_scene(scene, resolution=resolution)
     plan = plan_scene(sc)
+    if out is not None:  # before computing: an unusable folder is found out now, not after the work
+        _check_out(sc, Path(out))
     cache = cache if cache is not None else Cache()
     threads = threads or min(4, os.cpu_count() or 1)
     total = sum(s.size for s in plan.steps) + (len(sc.plots) if out is not None and draw else 0)
@@ -680,7 +663,7 @@ def _run_sweep(sc: Scene, out: Optional[os.PathLike], threads: int, progress: Op
 
 
 def _run_optimize(sc: Scene):
-    from ..design_optimize import optimize_from_scene
+    from ..optimize import optimize_from_scene
     try:
         return optimize_from_scene(dict(sc.optimize.table))
     except ValueError as exc:
@@ -722,12 +705,21 @@ def _write_sections(sc: Scene, result: RunResult, staging: Path, formats: Sequen
     return names
 
 
-def _write(sc: Scene, result: RunResult, out: Path, extra_formats, draw: bool, bar: Progress) -> List[Path]:
+def _check_out(sc: Scene, out: Path) -> None:
+    """SceneError (a bad command line or scene: exit status 2) when ``out`` cannot be created or
+    written to."""
+    from .._integrity import check_writable
     try:
-        out.mkdir(parents=True, exist_ok=True)
+        check_writable(str(out))
     except OSError as exc:
-        raise SceneError(f"cannot create the output folder {str(out)!r}: {exc.strerror or exc}", source=sc.source) from None
-    staging = Path(tempfile.mkdtemp(prefix=".gecko-staging-", dir=out))
+        raise SceneError(f"cannot write to the output folder {str(out)!r}: {exc.strerror or exc}",
+                         source=sc.source) from None
+
+
+def _write(sc: Scene, result: RunResult, out: Path, extra_formats, draw: bool, bar: Progress) -> List[Path]:
+    _check_out(sc, out)
+    from .._locking import make_staging
+    staging = Path(make_staging(str(out), ".gecko-staging-"))  # also removes those of killed runs
     try:
         names: List[str] = []
         for p in sc.plots:
@@ -753,7 +745,8 @@ def _write(sc: Scene, result: RunResult, out: Path, extra_formats, draw: bool, b
             os.replace(staging / n, out / n)
             final.append(out / n)
         if sc.sweep is not None:  # the table is in place: its chunks are no longer needed
-            shutil.rmtree(_sweep_folder(sc, out), ignore_errors=True)
+            from .._locking import remove_unless_locked
+            remove_unless_locked(_sweep_folder(sc, out))
         return final
     finally:
         shutil.rmtree(staging, ignore_errors=True)

@@ -56,3 +56,5 @@ def load_toml(path) -> dict:
         raise SceneError(f"not UTF-8 text ({exc.reason} at byte {exc.start})", source=source) from None
     except _toml.TOMLDecodeError as exc:
         raise SceneError(f"not valid TOML: {exc}", source=source) from None
+    except RecursionError:  # arrays or inline tables nested hundreds of levels deep
+        raise SceneError("not a usable scene: tables and arrays are nested too deeply", source=source) from None
