@@ -51,7 +51,7 @@ def test_the_cited_theory_pages_exist_and_define_the_cited_labels():
 
 
 def test_benchmarks_read_nothing_from_outside_the_repository():
-    bad = [str(p.relative_to(ROOT)) for p in _files("bench")
+    bad = [str(p.relative_to(ROOT)) for p in _files("bench", "validation")
            if re.search(r"\.\./shared|/work/|ROOT\.parent|\.\./\.\./\.\.", p.read_text(encoding="utf-8"))]
     assert bad == []
     assert (ROOT / "bench/seta/scipy_peer.py").exists()
@@ -93,7 +93,7 @@ def test_sdist_leaves_out_the_benchmark_data(tmp_path, monkeypatch):
     archive = tmp_path / name
     with tarfile.open(archive) as tar:
         members = tar.getnames()
-    assert not [m for m in members if re.search(r"/bench/results/|/bench/.*/data/|\.npz$|\.bin$|_chunks/", m)]
+    assert not [m for m in members if re.search(r"/bench/results/|/bench/.*/data/|/validation/(data|results)/|\.npz$|\.bin$|_chunks/", m)]
     for needed in ("CMakeLists.txt", "pyproject.toml", "include/gecko/gecko.hpp", "python/gecko/__init__.py",
                    "src/bindings", "cmake/gecko-config.cmake.in", "LICENSE", "bench/seta/scipy_peer.py"):
         assert any(m.split("/", 1)[-1].startswith(needed) for m in members), needed
