@@ -27,7 +27,7 @@ MODULES = [
      "Curved-beam rigidity, force traces, detachment, steady sliding, fitting "
      "({doc}`/theory/frictional_adhesion`)."),
     ("gecko.design_sweep", "Design sweeps", "Many designs' characteristics as one table."),
-    ("gecko.design_optimize", "Design optimisation", "Gradient-based seta design from exact sensitivities."),
+    ("gecko.optimize", "Design optimisation", "Gradient-based seta design from exact sensitivities."),
 ]
 
 
@@ -56,7 +56,7 @@ def _api(out: Path) -> None:
     import gecko.plot as gp
     lines += [f"   gecko.plot.{n}" for n in gp.__all__ if callable(getattr(gp, n))]
     lines += ["```", "", "## Modules", "", "```{eval-rst}", ".. autosummary::", "   :toctree: api", "",
-              "   gecko.plot", "   gecko.scene", "   gecko.cli", "```", ""]
+              "   gecko.plot", "   gecko.scene", "   gecko.designs", "   gecko.cli", "```", ""]
     (out / "api.md").write_text("\n".join(lines))
 
 
