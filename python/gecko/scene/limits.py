@@ -115,7 +115,7 @@ def _mb(b: int) -> str:
 
 def estimate(scene) -> Work:
     """Designs, points and bytes of results a scene asks for (no grid or table is built)."""
-    from .schema import DEFAULT_GRIDS
+    from .grids import DEFAULT_GRIDS
     designs, points, mem = 0, 0, 0
     for st in scene.studies:
         n = len(st.points)
