@@ -18,6 +18,8 @@ import time
 from pathlib import Path
 from typing import List, Optional
 
+from ._optional import MissingOptionalDependency
+
 #: the one table of exit statuses, for every command (written out in EPILOG too)
 EXIT_OK, EXIT_FAILED, EXIT_USAGE, EXIT_INTERRUPTED = 0, 1, 2, 130
 EXIT_CODES = {
@@ -168,6 +170,32 @@ def _progress(args) -> Optional[bool]:
 
 
 def main(argv: Optional[List[str]] = None) -> int:
+    """Run the ``gecko`` command line: ``gecko run``, ``figures``, ``plan``, ``validate``, ``models``.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The arguments (default: ``sys.argv[1:]``).
+
+    Returns
+    -------
+    int
+        The exit status: 0 success, 1 a computation failed, 2 bad usage, an invalid scene or a
+        missing optional package (the message names the extra to install), 130 interrupted.
+
+    Examples
+    --------
+    >>> from gecko.cli import main
+    >>> main(["validate", "--help"])  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    SystemExit: 0
+    >>> from gecko.scene import figure_scenes
+    >>> main(["plan", str(figure_scenes()[0])])  # doctest: +ELLIPSIS
+    scene: Two-level seta: critical line of adhesion of the reference design  (resolution 1)
+    ...
+    0
+    """
     os.environ.setdefault("MPLBACKEND", "Agg")  # never open a window
     parser = _parser()
     args = parser.parse_args(argv)
@@ -224,6 +252,9 @@ def main(argv: Optional[List[str]] = None) -> int:
     except SceneError as err:
         _err(str(err))
         return EXIT_USAGE
+    except MissingOptionalDependency as err:  # the message names the extra that installs it
+        _err(str(err))
+        return EXIT_USAGE
     except KeyboardInterrupt as exc:
         where = ""
         if getattr(exc, "folder", None):  # a sweep: how far it got (gecko._sweep_store.SweepInterrupted)
@@ -246,7 +277,7 @@ def _run(scenes: List[Path], args) -> int:
             res = run_scene(s, args.out, formats=formats, resolution=_resolution(args),
                             progress=_progress(args), cache=cache, threads=args.threads,
                             draw=not getattr(args, "no_figures", False))
-        except SceneError:
+        except (SceneError, MissingOptionalDependency):
             raise
         except Exception as exc:  # a kernel failure: say which scene, exit 1
             _err(f"{s}: {type(exc).__name__}: {exc}")

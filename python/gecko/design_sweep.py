@@ -8,7 +8,7 @@ designs: the nine design fields, the outputs asked for, and ``status``::
     designs = gecko.sobol_designs({"EI1": (1, 10), "alpha2": (0, 0.5)}, n=4096, seed=1)
     table = gecko.sweep(designs, outputs=["fn0", "slope_k", "max_pull_off"], out="runs/")
 
-Only what the outputs need is solved (models.md §1, gecko/seta/characteristics.hpp):
+Only what the outputs need is solved (docs/theory/two_level_seta.md, gecko/seta/characteristics.hpp):
 
 * ``ft_max`` and the ``small_*`` quantities are closed forms: no solver runs;
 * ``fn0``, ``slope_k``, ``sticky_at_rest`` need the natural state at Ft = 0 (one homotopy solve
@@ -56,7 +56,7 @@ written where ``sweep`` runs, so the workers need no shared disk. An address whe
 answers raises ConnectionError after ``connect_timeout`` seconds.
 
 pandas (and pyarrow for ``out=``, dask.distributed for clusters) are optional dependencies:
-``pip install gecko[sweep]``.
+``pip install "gecko-adhesion[sweep]"`` (a Dask cluster: ``pip install "gecko-adhesion[dask]"``).
 """
 from __future__ import annotations
 
@@ -245,25 +245,65 @@ def sweep(designs, outputs: Optional[Sequence[str]] = None, *, out: Optional[Uni
           chunk_size: int = 10000, threads: Optional[int] = None, client=None, executor: Optional[str] = None,
           connect_timeout: float = 10.0, errors: str = "raise",
           progress: Union[None, bool, Callable[[int, int], None]] = None):
-    """Characteristics of many designs: a pandas DataFrame with one row per design, in order.
+    """Characteristic quantities of many seta designs: one pandas table, one row per design, in order.
 
-    ``designs``: a table (DataFrame or {name: column}; missing fields take the reference scene's
-    values), an (n, 9) array or TwoLevelSeta objects; see ``design_grid``, ``random_designs``,
-    ``sobol_designs``, ``latin_hypercube_designs``. ``outputs``: names from ``SWEEP_OUTPUTS``
-    (default ``DEFAULT_SWEEP_OUTPUTS``); only what they need is solved. ``status`` is always there.
+    Only what the requested outputs need is solved (``SWEEP_OUTPUTS`` gives each output's depth:
+    closed forms, the natural state, or the whole line). The table is bitwise the same for any chunk
+    size, thread count and executor. Needs the ``[sweep]`` extra; a Dask cluster needs ``[dask]``.
 
-    ``out``: a folder; chunks go to ``out/sweep-<key>/`` as they finish and the table to
-    ``out/sweep-<key>.parquet`` (pyarrow); an interrupted run with the same designs, outputs and
-    ``chunk_size`` resumes from the chunks written. ``threads``: C++ threads per chunk (default:
-    the CPU count). ``client``: a ``dask.distributed.Client``, or ``executor="dask://host:port"``
-    (connecting waits at most ``connect_timeout`` seconds, then raises ConnectionError): chunks
-    then run as Dask tasks (one thread each unless ``threads`` is given) and stream back.
-    ``errors="raise"`` refuses a sweep with an invalid design (ValueError naming the row and
-    parameter) before computing; ``errors="nan"`` keeps it as a row with status 5.
-    ``progress``: None (a bar on a terminal), False, True, or a callable(done, total) called with
-    the number of designs done: once at the start (the designs already on disk) and after each chunk.
+    Parameters
+    ----------
+    designs : pandas.DataFrame, mapping, array_like of shape (n, 9), or sequence of TwoLevelSeta
+        The designs; a table's missing fields take the reference scene's values. See
+        :func:`design_grid`, :func:`random_designs`, :func:`sobol_designs`,
+        :func:`latin_hypercube_designs`.
+    outputs : sequence of str, optional
+        Names from ``SWEEP_OUTPUTS`` (default ``DEFAULT_SWEEP_OUTPUTS``); ``status`` is always there.
+    out : str or os.PathLike, optional
+        A folder: chunks go to ``out/sweep-<key>/`` as they finish, the table to
+        ``out/sweep-<key>.parquet``; the same call after an interruption computes only what is missing.
+    chunk_size : int, optional
+        Designs per chunk (default 10000).
+    threads : int, optional
+        C++ threads per chunk (default: the CPU count; one per Dask task unless given).
+    client : dask.distributed.Client, optional
+        Run the chunks as Dask tasks on this client.
+    executor : str, optional
+        ``"threads"`` (default) or ``"dask://host:port"`` to connect to a scheduler.
+    connect_timeout : float, optional
+        Seconds to wait for the scheduler before ``ConnectionError`` (default 10).
+    errors : {"raise", "nan"}, optional
+        Refuse a sweep with an invalid design before computing (default), or keep it as a row with
+        status 5.
+    progress : None, bool or callable, optional
+        None: a bar on a terminal; True/False; or a callable(done, total), called with the number
+        of designs done once at the start (the designs already on disk) and after each chunk.
 
-    ``table.attrs["sweep"]``: key, path, chunks computed and reused, seconds.
+    Returns
+    -------
+    pandas.DataFrame
+        The design fields, the outputs and ``status``; ``table.attrs["sweep"]`` holds the key, path,
+        chunks computed and reused, and the time taken.
+
+    Raises
+    ------
+    ValueError
+        If a design, an output name or an argument is invalid (naming the row and the parameter).
+    ConnectionError
+        If no Dask scheduler answers at ``executor``.
+    gecko._optional.MissingOptionalDependency
+        If pandas (or pyarrow for ``out``, distributed for a cluster) is not installed; the message
+        names the extra that installs it.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> designs = gecko.design_grid({"alpha2": [0.3, 0.5]})
+    >>> table = gecko.sweep(designs, outputs=["fn0", "max_pull_off"], progress=False)
+    >>> table[["alpha2", "fn0", "max_pull_off", "status"]].round(4)
+       alpha2     fn0  max_pull_off  status
+    0     0.3  2.3606        0.0000       0
+    1     0.5  0.4935        2.4502       0
     """
     pd = _need("pandas", "gecko.sweep")
     t0 = time.perf_counter()

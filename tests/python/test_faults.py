@@ -13,7 +13,7 @@ import warnings
 import numpy as np
 import pytest
 
-pd = pytest.importorskip("pandas", reason="gecko.sweep needs pandas (pip install gecko[sweep])")
+pd = pytest.importorskip("pandas", reason="gecko.sweep needs pandas (pip install \"gecko-adhesion[sweep]\")")
 pa = pytest.importorskip("pyarrow")
 pq = pytest.importorskip("pyarrow.parquet")
 

@@ -6,7 +6,7 @@ import math
 import numpy as np
 import pytest
 
-pd = pytest.importorskip("pandas", reason="gecko.sweep needs pandas (pip install gecko[sweep])")
+pd = pytest.importorskip("pandas", reason="gecko.sweep needs pandas (pip install \"gecko-adhesion[sweep]\")")
 
 import gecko  # noqa: E402
 from gecko import _core, design_sweep  # noqa: E402
@@ -236,7 +236,7 @@ def test_bad_design_tables():
 def test_without_pandas_the_error_names_the_extra(monkeypatch):
     import sys
     monkeypatch.setitem(sys.modules, "pandas", None)
-    with pytest.raises(ImportError, match=r"pip install gecko\[sweep\]"):
+    with pytest.raises(ImportError, match=r"pip install \"gecko-adhesion\[sweep\]\""):
         gecko.sweep(design_sweep.design_matrix({"EI1": [5.0]}), progress=False)
 
 

@@ -89,7 +89,8 @@ class SweepSpec:
         if self.designs == "grid":
             return ds.design_grid(self.grid, fixed=self.fixed)
         if self.designs == "table":
-            import pandas as pd
+            from .._optional import require
+            pd = require("pandas", "a [sweep] design table", "sweep")
             t = pd.read_parquet(self.table) if self.table.endswith(".parquet") else pd.read_csv(self.table)
             for k, v in self.fixed.items():
                 if k not in t.columns:

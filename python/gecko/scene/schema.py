@@ -134,6 +134,31 @@ class PlotSpec:
 
 @dataclass
 class Scene:
+    """A validated scene (:func:`load_scene`).
+
+    Attributes
+    ----------
+    title, description : str
+        As in the file.
+    resolution : float
+        Scale of every grid's number of points.
+    studies : list of Study
+        Each a model, its designs (:class:`Point`) and the outputs asked for.
+    plots : list of PlotSpec
+        The figures to draw.
+    source : str
+        The file, or ``"<dict>"``.
+    sweep, optimize : optional
+        The ``[sweep]`` and ``[optimize]`` sections, when present.
+
+    Examples
+    --------
+    >>> from gecko.scene import load_scene
+    >>> sc = load_scene({"title": "t", "study": [{"name": "k", "model": "kendall",
+    ...                                          "outputs": {"characteristics": True}}]})
+    >>> sc.study("k").model.name
+    'kendall'
+    """
     title: str
     description: str
     resolution: float
@@ -207,7 +232,35 @@ def _symbol(model: Model, name: str) -> str:
 # ---- parsing -----------------------------------------------------------------------------------
 
 def load_scene(scene, *, resolution: Optional[float] = None) -> Scene:
-    """A validated :class:`Scene` from a TOML path or a dict; ``resolution`` overrides the file's."""
+    """A validated scene from a TOML path or a dict.
+
+    Parameters
+    ----------
+    scene : str, os.PathLike, dict or Scene
+        A TOML file, the same structure as a dict, or a Scene (returned as is).
+    resolution : float, optional
+        Scales the number of points of every grid; overrides the file's ``resolution``.
+
+    Returns
+    -------
+    Scene
+        Title, description, studies (each with its model, designs and outputs), plots, and the
+        optional ``[sweep]`` and ``[optimize]`` sections.
+
+    Raises
+    ------
+    SceneError
+        If the scene cannot be read or is not valid; the message names the file and the key.
+
+    Examples
+    --------
+    >>> from gecko.scene import load_scene
+    >>> scene = {"title": "two angles", "study": [{"name": "seta", "model": "two_level_seta",
+    ...          "parameters": {"alpha2": [0.3, 0.5]}, "outputs": {"characteristics": ["fn0"]}}]}
+    >>> sc = load_scene(scene)
+    >>> sc.title, len(sc.studies[0].points)
+    ('two angles', 2)
+    """
     if isinstance(scene, Scene):
         return scene
     if isinstance(scene, dict):
