@@ -234,7 +234,23 @@ def rigidity(C, *, errors: str = "raise"):
 # ---- paths and force traces (eqs 1-3, 11-13; Figs 4 and 8) -------------------------------
 
 class DisplacementPath(NamedTuple):
-    """Vertices of a piecewise-linear path: at time ``t[i]`` the tip is at ``(d_par[i], d_perp[i])``."""
+    """Vertices of a piecewise-linear displacement path for :func:`force_trace`.
+
+    At time ``t[i]`` the tip is at ``(d_par[i], d_perp[i])``; between vertices it moves linearly.
+
+    Attributes
+    ----------
+    t : tuple of float
+        Strictly increasing times.
+    d_par, d_perp : tuple of float
+        Lateral and normal displacements at those times.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> gecko.FIG4_SPATULA_PATH.d_perp               # press in, then drag at fixed depth
+    (0.0, 1.0, 1.0)
+    """
 
     t: tuple
     d_par: tuple
@@ -266,7 +282,24 @@ def paper_rigidity() -> np.ndarray:
 
 
 class ForceTrace(NamedTuple):
-    """A force trace, arrays ready to plot: time, displacement and force components."""
+    """A force trace from :func:`force_trace`, arrays ready to plot.
+
+    Attributes
+    ----------
+    t : numpy.ndarray
+        Sample times.
+    d_par, d_perp : numpy.ndarray
+        Displacements of the tip.
+    f_par, f_perp : numpy.ndarray
+        Forces f = K d (f_perp < 0: tensile).
+
+    Examples
+    --------
+    >>> import gecko
+    >>> tr = gecko.force_trace()
+    >>> float(tr.f_perp.max()), float(tr.f_perp.min())   # compressive, then tensile
+    (2.0, -7.0)
+    """
 
     t: np.ndarray
     d_par: np.ndarray
@@ -550,7 +583,24 @@ FIG6_PLASTIC = SlidingModel(N=1e5, K=((6.0, -5.0), (-5.0, 5.0)), f_par1=6e-7, f_
 
 
 class SteadySliding(NamedTuple):
-    """Time-averaged forces of the N spatulae, stretch at detachment and t_on = stretch / V."""
+    """Mean forces of steady sliding, from :func:`steady_sliding`.
+
+    Attributes
+    ----------
+    F_par, F_perp : float or numpy.ndarray
+        Time-averaged lateral and normal force of the N spatulae (F_perp < 0: tensile).
+    stretch : float or numpy.ndarray or None
+        Lateral stretch at detachment (None with ``forces_only=True``).
+    t_on : float or numpy.ndarray or None
+        Attached time per cycle, stretch / V.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> r = gecko.steady_sliding(1e-4)
+    >>> round(float(r.F_par), 4), r.t_on > 0
+    (0.0424, True)
+    """
 
     F_par: object
     F_perp: object
@@ -639,7 +689,28 @@ def steady_sliding(V, model: SlidingModel = FIG6_VISCOELASTIC, *, t_off: float =
 # ---- beyond the paper: stochastic check and fit -------------------------------------------
 
 class SpatulaSimulation(NamedTuple):
-    """Result of :func:`simulate_spatulae`: the force of N spatulae estimated from M simulated."""
+    """Result of :func:`simulate_spatulae`: the force of N spatulae estimated from M simulated.
+
+    Attributes
+    ----------
+    mean_par, mean_perp : float
+        Time averages of F(t) over the simulated duration.
+    std_par, std_perp : float
+        Standard deviations of F(t) over the sample times (the fluctuation).
+    stretch, t_on : float
+        Stretch at detachment and attached time per cycle.
+    detachments : int
+        Detachments simulated.
+    t, F_par, F_perp : numpy.ndarray
+        Sample times (midpoints) and F(t) there.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> sim = gecko.simulate_spatulae(1e-4, spatulae=200, seed=1)
+    >>> sim.detachments > 0, sim.F_par.shape
+    (True, (200,))
+    """
 
     mean_par: float      # time average of F_par(t) over [0, duration]
     mean_perp: float
@@ -715,7 +786,34 @@ def simulate_spatulae(V: float, model: SlidingModel = FIG6_VISCOELASTIC, *, spat
 
 
 class SteadySlidingFit(NamedTuple):
-    """Result of :func:`fit_steady_sliding`."""
+    """Result of :func:`fit_steady_sliding`.
+
+    Attributes
+    ----------
+    model : SlidingModel
+        The fitted model.
+    names : tuple of str
+        The free parameters.
+    values, standard_errors : numpy.ndarray
+        Their estimates and standard errors (s^2 (J^T J)^-1, delta method for the logarithms).
+    covariance : numpy.ndarray
+        Covariance of the estimates.
+    rss : float
+        Residual sum of squares.
+    iterations : int
+        Levenberg-Marquardt iterations.
+    status : str
+        "converged", "max_iterations" or "singular".
+
+    Examples
+    --------
+    >>> import numpy as np, gecko
+    >>> V = np.logspace(-6, -2, 20)
+    >>> r = gecko.steady_sliding(V)
+    >>> fit = gecko.fit_steady_sliding(V, r.F_par, r.F_perp, fit_f_par1=False)
+    >>> fit.status, len(fit.values) == len(fit.names)
+    ('converged', True)
+    """
 
     model: SlidingModel           # the fitted model
     names: tuple                  # free parameters
