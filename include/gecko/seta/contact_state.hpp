@@ -81,7 +81,7 @@ template <class T>
 struct contact_options {
   // Scan nodes per monotone piece of the spatula orbit (each piece is also searched between
   // nodes for a hidden pair of roots). More nodes: more robust, slower.
-  int scan_points = 10;
+  int scan_points = 8;
   // A root within this (relative to l1 + l2) of t = l2 is the critical state itself and counts
   // as an equilibrium with a = l1 + l2 (the critical line is the boundary of contact).
   T edge_tolerance = T(1e-12);
@@ -146,6 +146,8 @@ struct forward_problem {
   segment_constants<T, E2> g2;  // the spatula: M2 = Ft + w (eqs 8, 12)
   T psi_edge;                   // pi/2 - phi
   T ratio;                      // EI2/EI1
+  T cphi, sphi;                 // cos, sin phi = Ft/N, Fn/N
+  T u0;                         // sin(alpha1 - phi)
 
   forward_problem(const seta_params<T>& params, T fn, T ft) : d(params), Fn(fn), Ft(ft) {
     using std::atan2; using std::hypot; using std::sqrt;
@@ -161,27 +163,49 @@ struct forward_problem {
     g2 = make_segment<E2>(d.EI2, d.c2, Ft + d.w, N);
     psi_edge = seta_pi<T>() / 2 - phi;
     ratio = d.EI2 / d.EI1;
+    cphi = N > 0 ? Ft / N : T(1);
+    sphi = N > 0 ? Fn / N : T(0);
+    u0 = d.s1 * cphi - d.co1 * sphi;
   }
 
-  // R2(beta) = 1/2 EI2 theta2'^2 at the joint (eq 12 with M2 = Ft + w).
-  T R2(T beta) const {
-    using std::sin;
-    const T u = sin(beta - phi);
-    return g2.M - N * u - d.c2 * N * N * u * u / 2;
+  // sin(beta - phi) and sin(beta - alpha2 - phi) from one sincos(beta), by angle addition.
+  void joint_sines(T beta, T& ub, T& v) const {
+    using std::cos; using std::sin;
+    const T sb = sin(beta), cb = cos(beta);
+    ub = sb * cphi - cb * sphi;
+    const T sj = sb * d.co2 - cb * d.s2, cj = cb * d.co2 + sb * d.s2;
+    v = sj * cphi - cj * sphi;
   }
+  // R2 = 1/2 EI2 theta2'^2 at the joint (eq 12 with M2 = Ft + w), u = sin(beta - phi).
+  T R2u(T u) const { return g2.M - N * u - d.c2 * N * N * u * u / 2; }
   // R1(alpha1) = 1/2 EI1 theta1'(0)^2 with M1 from the joint conditions (eqs 4, 12).
-  T R1(T beta, T p) const {
-    using std::sin;
-    const T v = sin(beta - d.alpha2 - phi), u0 = sin(d.alpha1 - phi);
+  T R1v(T v, T p) const {
     T r = ratio * p * p + N * (v - u0);
     if constexpr (E1) r += d.c1 * N * N * (v - u0) * (v + u0) / 2;
     return r;
   }
-  T p_of(T beta, int sp) const {
-    using std::sqrt;
-    const T r = R2(beta);
-    const T s = r > 0 ? sqrt(r) : T(0);
-    return sp >= 0 ? s : -s;
+  // sign * sqrt(r); at a turning point (r <= 0 by rounding) the smallest normal number keeps
+  // the sign, which the Carlson forms read (X3 >= 0 or < 0) to know the branch.
+  static T signed_sqrt(T r, int sign) {
+    const T s = r > 0 ? std::sqrt(r) : std::numeric_limits<T>::min();
+    return sign >= 0 ? s : -s;
+  }
+  T R2(T beta) const {
+    T ub, v;
+    joint_sines(beta, ub, v);
+    return R2u(ub);
+  }
+  T p_of(T beta, int sp) const { return signed_sqrt(R2(beta), sp); }
+  T R1(T beta, T p) const {
+    T ub, v;
+    joint_sines(beta, ub, v);
+    return R1v(v, p);
+  }
+  // R1(alpha1) along the orbit branch sp (the join of the two base-rate branches where it is 0).
+  T R1_on(T beta, int sp) const {
+    T ub, v;
+    joint_sines(beta, ub, v);
+    return R1v(v, signed_sqrt(R2u(ub), sp));
   }
 
   struct eval_out {
@@ -223,8 +247,10 @@ struct forward_problem {
   // sq; with_spatula adds L2 = a - l1 (eq 15, first).
   bool eval(T beta, int sp, int sq, eval_out& o, bool with_beam, bool with_spatula) const {
     using std::sqrt;
-    o.p = p_of(beta, sp);
-    const T r1 = R1(beta, o.p);
+    T ub, v;
+    joint_sines(beta, ub, v);
+    o.p = signed_sqrt(R2u(ub), sp);
+    const T r1 = with_beam ? R1v(v, o.p) : T(0);
     if (with_beam && !(r1 >= 0)) return false;
     o.q = r1 > 0 ? (sq >= 0 ? sqrt(r1) : -sqrt(r1)) : T(0);
     const auto g = make_seta_geometry<E1, E2>(d, Fn, beta, o.p, o.q, Ft, edge, false);
@@ -266,30 +292,38 @@ struct orbit_piece {
   int sp;
 };
 
-// Solves L2(beta, sp) = target for beta between lo and hi (L2 monotone there, target inside):
-// Newton on the orbit, dt/dbeta = -sqrt(EI2/2)/p (eq 10), safeguarded by bisection.
+// Solves L2(beta, sp) = target for beta between lo and hi (L2 monotone there; f_lo: the sign of
+// L2 - target at lo): Newton on the orbit, dt/dbeta = -sqrt(EI2/2)/p (eq 10), safeguarded by
+// bisection. False when no beta there has |L2 - target| within rounding (the target lies
+// outside the piece).
 template <class FP, class T>
 inline bool invert_spatula(const FP& fp, int sp, T lo, T hi, T f_lo, T target, T guess, T& beta) {
   using std::fabs; using std::sqrt;
   const T eps = std::numeric_limits<T>::epsilon();
   T x = (guess > (lo < hi ? lo : hi) && guess < (lo < hi ? hi : lo)) ? guess : (lo + hi) / 2;
   const T scale = sqrt(fp.d.EI2 / 2);
+  const T ftol = 64 * eps * (1 + target);
   for (int it = 0; it < 100; ++it) {
     const T L = fp.L2(x, sp);
     if (!(L == L)) return false;
     const T f = L - target;
-    if (f == 0) { beta = x; return true; }
-    if ((f > 0) == (f_lo > 0)) { lo = x; f_lo = f; } else { hi = x; }
+    if (fabs(f) <= eps * target) { beta = x; return true; }
+    if ((f > 0) == (f_lo > 0)) lo = x; else hi = x;
     const T p = fp.p_of(x, sp);
     T xn = p != 0 ? x - f / (-scale / p) : (lo + hi) / 2;
-    const bool inside = (xn - lo) * (xn - hi) < 0;
-    if (!inside) xn = (lo + hi) / 2;
-    const T step = fabs(xn - x);
+    const T tol = 4 * eps * (1 + fabs(x));
+    if (fabs(xn - x) <= tol || fabs(hi - lo) <= tol) {
+      // Converged in beta: a root when the residual is rounding (near a turning point t moves
+      // by |dt/dbeta| ulp(beta), large there), not the end of a piece the target lies beyond.
+      beta = x;
+      return fabs(f) <= ftol || fabs(f) <= sqrt(eps) * (1 + target) * T(1e-3);
+    }
+    if (!((xn - lo) * (xn - hi) < 0)) xn = (lo + hi) / 2;
     x = xn;
-    if (step <= 4 * eps * (1 + fabs(x)) || fabs(hi - lo) <= 4 * eps * (1 + fabs(x))) { beta = x; return true; }
   }
   beta = x;
-  return true;
+  const T L = fp.L2(x, sp);
+  return fabs(L - target) <= ftol;
 }
 
 // The pieces of the orbit with 0 <= t <= l2 (at most one period). Returns false with
@@ -308,27 +342,34 @@ inline bool orbit_pieces(const FP& fp, orbit_piece<T> pieces[3], int& count, boo
   if (!(g.up < 1)) {
     // Rotation: theta2' > 0 along the whole orbit; beta decreases with t, less than a turn.
     const T lo = half_pi - two_pi;
-    const T L_lo = fp.L2(lo + 64 * std::numeric_limits<T>::epsilon(), 1, &unsupported);
-    if (unsupported) return false;
-    if (L_lo == L_lo && L_lo <= l2) { unsupported = true; return false; }
     T beta = 0;
-    if (!invert_spatula(fp, 1, lo, half_pi, T(1), l2, half_pi - l2 * rate_edge, beta)) return false;
-    pieces[count++] = {half_pi, beta, 1};
-    return true;
+    if (invert_spatula(fp, 1, lo, half_pi, T(1), l2, half_pi - l2 * rate_edge, beta)) {
+      pieces[count++] = {half_pi, beta, 1};
+      return true;
+    }
+    const T L_lo = fp.L2(lo + 64 * std::numeric_limits<T>::epsilon(), 1, &unsupported);
+    if (L_lo == L_lo && L_lo <= l2) unsupported = true;  // l2 longer than a full turn
+    return false;
   }
   // Libration: psi in [-pi - a*, a*] (mod 2 pi) with a* = asin(u+), the window holding the edge.
   const T astar = asin(g.up);
   const T shift = floor((fp.psi_edge + pi + astar) / two_pi);
   const T beta_min = fp.phi - pi - astar + shift * two_pi;
   const T beta_max = fp.phi + astar + shift * two_pi;
-  // Piece 1: theta2'(l1) > 0, beta from pi/2 down to the lower turning point.
+  // Piece 1: theta2'(l1) > 0, beta from pi/2 down to the lower turning point. Most loads end
+  // there (t = l2 before the turning point): try that first, without measuring the piece.
+  {
+    T beta = 0;
+    if (invert_spatula(fp, 1, beta_min, half_pi, T(1), l2, half_pi - l2 * rate_edge, beta)) {
+      pieces[count++] = {half_pi, beta, 1};
+      return true;
+    }
+  }
   const T t1 = fp.L2(beta_min, 1, &unsupported);
   if (unsupported) return false;
   if (!(t1 == t1)) return false;
-  if (l2 <= t1) {
-    T beta = 0;
-    if (!invert_spatula(fp, 1, beta_min, half_pi, t1 - l2, l2, half_pi - l2 * rate_edge, beta)) return false;
-    pieces[count++] = {half_pi, beta, 1};
+  if (l2 <= t1) {  // the turning point itself (or rounding at it)
+    pieces[count++] = {half_pi, beta_min, 1};
     return true;
   }
   pieces[count++] = {half_pi, beta_min, 1};
@@ -454,17 +495,41 @@ inline contact_status contact_solve(const seta_params<T>& d, T Fn, T Ft, const c
     // The shorter beam path leaves alpha1 in the direction of the joint end (sign of h1); the
     // other is longer by twice the distance from alpha1 to a turning point, so G >= 0 there
     // whenever G >= 0 on the shorter one.
-    const T p = fp.p_of(x.beta, x.sp);
-    const T r1 = fp.R1(x.beta, p);
+    T ub, vj;
+    fp.joint_sines(x.beta, ub, vj);
+    const T p = FP::signed_sqrt(fp.R2u(ub), x.sp);
+    const T r1 = fp.R1v(vj, p);
     x.G[0] = x.G[1] = nan;
     if (!(r1 >= 0)) return;
     const int s_short = (x.beta - d.alpha2 - d.alpha1 >= 0) ? 1 : -1;
     const int i_short = s_short > 0 ? 0 : 1;
     if (fp.eval(x.beta, x.sp, s_short, o, true, false)) x.G[i_short] = o.G;
     else if (o.unsupported) unsupported = true;
-    if (x.G[i_short] >= 0 && fp.g2.N > 0 && r1 > 0) {
-      x.G[1 - i_short] = inf;  // known positive if it exists (libration); checked when bracketed
-      return;
+    if (x.G[i_short] == x.G[i_short]) {
+      // The longer path adds twice the distance d from alpha1 to the turning point behind it;
+      // d >= |psi_turn - psi(alpha1)| / max theta1', and theta1'^2 = 2 R1(u)/EI1 is largest at
+      // u = -1 (R1 is concave in u with its vertex at u <= -1). So G_long > 0 needs no R_F when
+      // G_short + 2 d_low > 0 (the common case).
+      T d_low = 0;
+      if (x.G[i_short] < 0) {
+        using std::asin;
+        T M1 = fp.ratio * p * p + fp.N * vj;
+        if constexpr (E1) M1 += d.c1 * fp.N * fp.N * vj * vj / 2;
+        const auto g1 = make_segment<E1>(d.EI1, d.c1, M1, fp.N);
+        if (g1.up < 1) {
+          const T astar = asin(g1.up), pi = seta_pi<T>();
+          const T ps = d.alpha1 - fp.phi;
+          const T shift = std::floor((ps + pi + astar) / (2 * pi)) * 2 * pi;
+          const T dpsi = s_short > 0 ? ps - (-pi - astar + shift) : astar + shift - ps;
+          T Rmax = M1 + fp.N;
+          if constexpr (E1) Rmax = d.c1 * fp.N > 1 ? M1 + 1 / (2 * d.c1) : Rmax - d.c1 * fp.N * fp.N / 2;
+          if (dpsi > 0 && Rmax > 0) d_low = dpsi / sqrt(2 * Rmax / d.EI1);
+        }
+      }
+      if (x.G[i_short] + 2 * d_low > 0) {
+        x.G[1 - i_short] = inf;  // known positive if it exists; evaluated when bracketed
+        return;
+      }
     }
     if (fp.eval(x.beta, x.sp, -s_short, o, true, false)) x.G[1 - i_short] = o.G;
     else if (o.unsupported) unsupported = true;
@@ -517,7 +582,7 @@ inline contact_status contact_solve(const seta_params<T>& d, T Fn, T Ft, const c
         const bool def_here = nodes[i].G[0] == nodes[i].G[0] || nodes[i].G[1] == nodes[i].G[1];
         if (def_prev != def_here && nm + 1 < max_nodes) {
           const int sp = nodes[i].sp;
-          auto r1 = [&](T beta) { return fp.R1(beta, fp.p_of(beta, sp)); };
+          auto r1 = [&](T beta) { return fp.R1_on(beta, sp); };
           const T b0 = nodes[i - 1].beta, b1 = nodes[i].beta;
           const T f0 = r1(b0), f1 = r1(b1);
           T bj = 0;
@@ -639,24 +704,34 @@ inline contact_status contact_solve(const seta_params<T>& d, T Fn, T Ft, const c
   if (n_eq > 1) return contact_status::several_equilibria;
   if (unsupported) return contact_status::unsupported_state;
   if (refine_failed) return contact_status::not_converged;
-  // No equilibrium on the spatula: why (header comment).
-  auto branch_min = [&](int i) {
+  // No equilibrium on the spatula: why (header comment). The node nearest to a root is the one
+  // with the smallest |G| (on the shorter beam path); at the t = l2 end the root lies beyond the
+  // spatula, at the t = 0 end beyond the joint. A minimum inside means no root nearby at all:
+  // G > 0 there (the beam falls short for every contact length) is no contact, G < 0 the edge
+  // pushed onto the beam. No beam state anywhere on the orbit (R1(alpha1) < 0: a pull the beam
+  // cannot carry into contact) is no contact.
+  int first = -1, last_def = -1, best = -1;
+  T best_abs = inf;
+  for (int i = 0; i < nn; ++i) {
     T m = nan;
     for (int b = 0; b < 2; ++b) {
-      const T v = b == 1 && nodes[i].G[b] == inf ? nan : nodes[i].G[b];
-      if (v == v && !(m <= v)) m = v;
+      const T v = nodes[i].G[b];
+      if (v == v && v != inf && !(fabs(m) <= fabs(v))) m = v;
     }
-    return m;
-  };
-  const T g_end = branch_min(nn - 1), g_start = branch_min(0);
-  if (g_end == g_end && g_start == g_start && (g_end > 0) == (g_start > 0)) {
-    // G tends to zero beyond t = l2 (the seta would need a longer spatula: below the critical
-    // line) or before t = 0 (the edge would lie on the beam).
-    return fabs(g_end) <= fabs(g_start) ? contact_status::no_contact : contact_status::beyond_joint;
+    if (!(m == m)) continue;
+    if (first < 0) first = i;
+    last_def = i;
+    if (fabs(m) < best_abs) { best_abs = fabs(m); best = i; }
   }
-  if (!(g_end == g_end) && g_start == g_start)  // no beam reaches the joint state at t = l2
-    return g_start > 0 ? contact_status::no_contact : contact_status::beyond_joint;
-  return contact_status::not_converged;
+  if (best < 0) return contact_status::no_contact;
+  if (best == last_def && best != first) return contact_status::no_contact;
+  if (best == first && best != last_def) return contact_status::beyond_joint;
+  T gb = nan;
+  for (int b = 0; b < 2; ++b) {
+    const T v = nodes[best].G[b];
+    if (v == v && v != inf && !(fabs(gb) <= fabs(v))) gb = v;
+  }
+  return gb > 0 ? contact_status::no_contact : contact_status::beyond_joint;
 }
 
 template <class T>
