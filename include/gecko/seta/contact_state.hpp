@@ -19,11 +19,11 @@
 // nodes is searched for a hidden pair of roots. Both lengths are the closed-form Carlson forms of
 // gecko/seta/elastica_segment.hpp (turning points included); nothing is integrated.
 //
-// Where no equilibrium has 0 < t <= l2, G has one sign at both ends and the side where |G| is
-// smaller says where the equilibrium went: beyond t = l2 (the seta would need a longer spatula: a
-// load below the critical line, where the seta loses side contact: no_contact), or before t = 0
-// (the contact edge would pass the joint onto the beam, which is outside the model:
-// beyond_joint). Without load this is eq (22): no side contact iff G(l2) > 0.
+// Where no equilibrium has 0 < t <= l2, G has one sign at both ends and says where the equilibrium
+// went: beyond t = l2 (the seta would need a longer spatula: a load below the critical line, where
+// the seta loses side contact: no_contact), or before t = 0 (the contact edge would pass the joint
+// onto the beam, which is outside the model: beyond_joint); see the end of contact_solve. Without
+// load this is eq (22): no side contact iff G(l2) > 0.
 //
 // Convention (as the critical solver's): each segment is measured along the shortest elastica
 // path with the given end rates, so the spatula is followed back from the edge for less than one
@@ -81,7 +81,7 @@ template <class T>
 struct contact_options {
   // Scan nodes per monotone piece of the spatula orbit (each piece is also searched between
   // nodes for a hidden pair of roots). More nodes: more robust, slower.
-  int scan_points = 8;
+  int scan_points = 6;
   // A root within this (relative to l1 + l2) of t = l2 is the critical state itself and counts
   // as an equilibrium with a = l1 + l2 (the critical line is the boundary of contact).
   T edge_tolerance = T(1e-12);
@@ -148,6 +148,7 @@ struct forward_problem {
   T ratio;                      // EI2/EI1
   T cphi, sphi;                 // cos, sin phi = Ft/N, Fn/N
   T u0;                         // sin(alpha1 - phi)
+  T sqrt_ratio, X3_edge;        // sqrt(EI2/EI1); X3 of the contact edge (theta2' > 0 there)
 
   forward_problem(const seta_params<T>& params, T fn, T ft) : d(params), Fn(fn), Ft(ft) {
     using std::atan2; using std::hypot; using std::sqrt;
@@ -166,14 +167,20 @@ struct forward_problem {
     cphi = N > 0 ? Ft / N : T(1);
     sphi = N > 0 ? Fn / N : T(0);
     u0 = d.s1 * cphi - d.co1 * sphi;
+    sqrt_ratio = sqrt(ratio);
+    // f3 at the contact edge: (w - c Ft^2/2)/f4 = w edge^2/f4(Ft/N) (as make_seta_geometry).
+    X3_edge = sqrt(d.w) * edge / seg_sqrt_f4(g2, cphi);
   }
 
   // sin(beta - phi) and sin(beta - alpha2 - phi) from one sincos(beta), by angle addition.
   void joint_sines(T beta, T& ub, T& v) const {
     using std::cos; using std::sin;
-    const T sb = sin(beta), cb = cos(beta);
-    ub = sb * cphi - cb * sphi;
-    const T sj = sb * d.co2 - cb * d.s2, cj = cb * d.co2 + sb * d.s2;
+    joint_sines_half(sin(beta / 2), cos(beta / 2), ub, v);
+  }
+  void joint_sines_half(T sb, T cb, T& ub, T& v) const {
+    const T sinb = 2 * sb * cb, cosb = (cb - sb) * (cb + sb);
+    ub = sinb * cphi - cosb * sphi;
+    const T sj = sinb * d.co2 - cosb * d.s2, cj = cosb * d.co2 + sinb * d.s2;
     v = sj * cphi - cj * sphi;
   }
   // R2 = 1/2 EI2 theta2'^2 at the joint (eq 12 with M2 = Ft + w), u = sin(beta - phi).
@@ -246,23 +253,38 @@ struct forward_problem {
   // G = L_beam - l1 (eq 15, second) at the joint angle beta, spatula rate sign sp, base rate sign
   // sq; with_spatula adds L2 = a - l1 (eq 15, first).
   bool eval(T beta, int sp, int sq, eval_out& o, bool with_beam, bool with_spatula) const {
-    using std::sqrt;
+    using std::cos; using std::sin; using std::sqrt;
+    // One sincos(beta/2) gives every sine the two direct forms need (as make_seta_geometry of
+    // gecko/seta/critical_residual.hpp does for the critical state), the spatula's constants
+    // are the load's.
+    const T sb = sin(beta / 2), cb = cos(beta / 2);
     T ub, v;
-    joint_sines(beta, ub, v);
+    joint_sines_half(sb, cb, ub, v);
     o.p = signed_sqrt(R2u(ub), sp);
-    const T r1 = with_beam ? R1v(v, o.p) : T(0);
-    if (with_beam && !(r1 >= 0)) return false;
-    o.q = r1 > 0 ? (sq >= 0 ? sqrt(r1) : -sqrt(r1)) : T(0);
-    const auto g = make_seta_geometry<E1, E2>(d, Fn, beta, o.p, o.q, Ft, edge, false);
     if (with_spatula) {
-      if (!seg_len(g.spatula, beta - phi, g.X3_s2, psi_edge, g.X3_e2, g.trig2, g.h2, o.L2, o.spatula_plan,
-                   o.unsupported))
+      const T r2 = seta_sqrt2<T>();
+      const T sh2 = (cb - sb) / r2, ch2 = (cb + sb) / r2;
+      const direct_trig<T> trig2{cphi, ub, sh2, ch2, ch2 * cphi - sh2 * sphi};
+      const T X3s = o.p / seg_sqrt_f4(g2, ub);
+      if (!seg_len(g2, beta - phi, X3s, psi_edge, X3_edge, trig2, (seta_pi<T>() / 2 - beta) / 2, o.L2,
+                   o.spatula_plan, o.unsupported))
         return false;
     }
     if (with_beam) {
+      const T r1 = R1v(v, o.p);
+      if (!(r1 >= 0)) return false;
+      o.q = r1 > 0 ? (sq >= 0 ? sqrt(r1) : -sqrt(r1)) : T(0);
+      T M1 = ratio * o.p * o.p + N * v;
+      if constexpr (E1) M1 += d.c1 * N * N * v * v / 2;
+      const auto g1 = make_segment<E1>(d.EI1, d.c1, M1, N);
+      const T sh1 = sb * d.cA - cb * d.sA, ch1 = cb * d.cA + sb * d.sA;
+      const T sm1 = sb * d.cB + cb * d.sB, cm1 = cb * d.cB - sb * d.sB;
+      const direct_trig<T> trig1{v, u0, sh1, ch1, sm1 * cphi - cm1 * sphi};
+      const T X3s = o.q / seg_sqrt_f4(g1, u0);
+      const T X3e = sqrt_ratio * o.p / seg_sqrt_f4(g1, v);
       T L1 = 0;
-      if (!seg_len(g.beam, d.alpha1 - phi, g.X3_s1, beta - d.alpha2 - phi, g.X3_e1, g.trig1, g.h1, L1, o.beam_plan,
-                   o.unsupported))
+      if (!seg_len(g1, d.alpha1 - phi, X3s, beta - d.alpha2 - phi, X3e, trig1, (beta - d.alpha2 - d.alpha1) / 2, L1,
+                   o.beam_plan, o.unsupported))
         return false;
       o.G = L1 - d.l1;
     }
@@ -337,13 +359,19 @@ inline bool orbit_pieces(const FP& fp, orbit_piece<T> pieces[3], int& count, boo
   count = 0;
   unsupported = false;
   if (!(g.N > 0)) return false;
-  // First-order guess of the joint angle at t = l2 (curvature at the edge).
+  // Guess of the joint angle at t = l2: the Taylor series of theta2 back from the edge, where
+  // theta2 = pi/2, theta2' = rate_edge, and eq (2) gives EI2 theta2'' = -Fn (1 + Ft/EA2) and,
+  // differentiated once more, EI2 theta2''' = (Ft (1 + Ft/EA2) - Fn^2/EA2) theta2'.
   const T rate_edge = fp.p_of(half_pi, 1) * std::sqrt(2 / fp.d.EI2);
+  const T c2 = fp.d.c2;
+  const T dd = -fp.Fn * (1 + c2 * fp.Ft) / fp.d.EI2;
+  const T ddd = (fp.Ft * (1 + c2 * fp.Ft) - c2 * fp.Fn * fp.Fn) / fp.d.EI2 * rate_edge;
+  const T guess1 = half_pi - l2 * rate_edge + dd * l2 * l2 / 2 - ddd * l2 * l2 * l2 / 6;
   if (!(g.up < 1)) {
     // Rotation: theta2' > 0 along the whole orbit; beta decreases with t, less than a turn.
     const T lo = half_pi - two_pi;
     T beta = 0;
-    if (invert_spatula(fp, 1, lo, half_pi, T(1), l2, half_pi - l2 * rate_edge, beta)) {
+    if (invert_spatula(fp, 1, lo, half_pi, T(1), l2, guess1, beta)) {
       pieces[count++] = {half_pi, beta, 1};
       return true;
     }
@@ -351,6 +379,11 @@ inline bool orbit_pieces(const FP& fp, orbit_piece<T> pieces[3], int& count, boo
     if (L_lo == L_lo && L_lo <= l2) unsupported = true;  // l2 longer than a full turn
     return false;
   }
+  // Past a turning point theta2 - theta_turn ~ |theta2''|/2 t^2 (eq 2): the first guess there.
+  auto turn = [&](T beta) {
+    const T u = std::sin(beta - fp.phi);
+    return std::fabs(fp.N * std::cos(beta - fp.phi) * (1 + fp.d.c2 * fp.N * u)) / (2 * fp.d.EI2);
+  };
   // Libration: psi in [-pi - a*, a*] (mod 2 pi) with a* = asin(u+), the window holding the edge.
   const T astar = asin(g.up);
   const T shift = floor((fp.psi_edge + pi + astar) / two_pi);
@@ -360,7 +393,7 @@ inline bool orbit_pieces(const FP& fp, orbit_piece<T> pieces[3], int& count, boo
   // there (t = l2 before the turning point): try that first, without measuring the piece.
   {
     T beta = 0;
-    if (invert_spatula(fp, 1, beta_min, half_pi, T(1), l2, half_pi - l2 * rate_edge, beta)) {
+    if (invert_spatula(fp, 1, beta_min, half_pi, T(1), l2, guess1, beta)) {
       pieces[count++] = {half_pi, beta, 1};
       return true;
     }
@@ -378,7 +411,7 @@ inline bool orbit_pieces(const FP& fp, orbit_piece<T> pieces[3], int& count, boo
   if (unsupported || !(t2 == t2)) return false;
   if (l2 <= t2) {
     T beta = 0;
-    if (!invert_spatula(fp, -1, beta_min, beta_max, t1 - l2, l2, (beta_min + beta_max) / 2, beta))
+    if (!invert_spatula(fp, -1, beta_min, beta_max, t1 - l2, l2, beta_min + turn(beta_min) * (l2 - t1) * (l2 - t1), beta))
       return false;
     pieces[count++] = {beta_min, beta, -1};
     return true;
@@ -389,7 +422,8 @@ inline bool orbit_pieces(const FP& fp, orbit_piece<T> pieces[3], int& count, boo
   if (unsupported || !(t3 == t3)) return false;
   if (!(l2 < t3)) { unsupported = true; return false; }
   T beta = 0;
-  if (!invert_spatula(fp, 1, beta_max, half_pi, t2 - l2, l2, (beta_max + half_pi) / 2, beta)) return false;
+  if (!invert_spatula(fp, 1, beta_max, half_pi, t2 - l2, l2, beta_max - turn(beta_max) * (l2 - t2) * (l2 - t2), beta))
+    return false;
   pieces[count++] = {beta_max, beta, 1};
   return true;
 }
@@ -704,34 +738,34 @@ inline contact_status contact_solve(const seta_params<T>& d, T Fn, T Ft, const c
   if (n_eq > 1) return contact_status::several_equilibria;
   if (unsupported) return contact_status::unsupported_state;
   if (refine_failed) return contact_status::not_converged;
-  // No equilibrium on the spatula: why (header comment). The node nearest to a root is the one
-  // with the smallest |G| (on the shorter beam path); at the t = l2 end the root lies beyond the
-  // spatula, at the t = 0 end beyond the joint. A minimum inside means no root nearby at all:
-  // G > 0 there (the beam falls short for every contact length) is no contact, G < 0 the edge
-  // pushed onto the beam. No beam state anywhere on the orbit (R1(alpha1) < 0: a pull the beam
-  // cannot carry into contact) is no contact.
-  int first = -1, last_def = -1, best = -1;
-  T best_abs = inf;
-  for (int i = 0; i < nn; ++i) {
+  // No equilibrium on the spatula: why (header comment). G at the ends (t = 0: the edge at the
+  // joint; t = l2: the edge at the spatula tip) extrapolated linearly to its root says where the
+  // equilibrium went when that root is near (within l2 of an end): beyond the tip (no contact)
+  // or beyond the joint (contact on the beam); this follows the equilibria of nearby loads
+  // continuously across both boundary lines. With no root near, the sign of G decides: the beam
+  // falls short for every contact length (G > 0: no contact) or is too long for all of them
+  // (G < 0: the edge is pushed onto the beam). No beam state anywhere on the orbit
+  // (R1(alpha1) < 0: a pull the beam cannot carry into contact) is no contact.
+  auto end_value = [&](int i) {
     T m = nan;
     for (int b = 0; b < 2; ++b) {
       const T v = nodes[i].G[b];
       if (v == v && v != inf && !(fabs(m) <= fabs(v))) m = v;
     }
-    if (!(m == m)) continue;
-    if (first < 0) first = i;
-    last_def = i;
-    if (fabs(m) < best_abs) { best_abs = fabs(m); best = i; }
+    return m;
+  };
+  const T g0 = end_value(0), g1 = end_value(nn - 1);
+  if (g0 == g0 && g1 == g1) {
+    if (g0 != g1) {
+      const T tstar = -g0 / (g1 - g0);  // in units of l2
+      if (tstar > 1 && tstar <= 2) return contact_status::no_contact;
+      if (tstar < 0 && tstar >= -1) return contact_status::beyond_joint;
+    }
+    return g1 > 0 ? contact_status::no_contact : contact_status::beyond_joint;
   }
-  if (best < 0) return contact_status::no_contact;
-  if (best == last_def && best != first) return contact_status::no_contact;
-  if (best == first && best != last_def) return contact_status::beyond_joint;
-  T gb = nan;
-  for (int b = 0; b < 2; ++b) {
-    const T v = nodes[best].G[b];
-    if (v == v && v != inf && !(fabs(gb) <= fabs(v))) gb = v;
-  }
-  return gb > 0 ? contact_status::no_contact : contact_status::beyond_joint;
+  if (g0 == g0) return g0 > 0 ? contact_status::no_contact : contact_status::beyond_joint;
+  if (g1 == g1) return g1 > 0 ? contact_status::no_contact : contact_status::beyond_joint;
+  return contact_status::no_contact;
 }
 
 template <class T>
