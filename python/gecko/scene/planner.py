@@ -152,6 +152,10 @@ def plan_scene(scene: Scene) -> Plan:
                 steps.append(Step(st.name, "shapes", pts,
                                   f"critical states at the requested Ft, then RK4 of the elastica in C++ "
                                   f"({o['points'] - 1} steps per segment)"))
+            if "contact_contours" in out:
+                steps.append(Step(st.name, "contact_contours", pts,
+                                  "the forward problem (contact length a) on the Fn x Ft grid, one C++ call per "
+                                  f"design ({kk} kernel)"))
             if "sensitivities" in out:
                 steps.append(Step(st.name, "sensitivities", pts,
                                   "dFn/d(design) by the implicit function theorem (dual numbers in C++)"))
