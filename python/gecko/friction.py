@@ -788,13 +788,29 @@ def simulate_spatulae(V: float, model: SlidingModel = FIG6_VISCOELASTIC, *, spat
 
 @dataclasses.dataclass(frozen=True)
 class ParametricLaw:
-    """A user detachment law ``G = func(V, **params)`` with named parameters, for
-    :func:`steady_sliding`, :func:`simulate_spatulae` and :func:`fit_steady_sliding`.
+    """A user detachment law G = func(V, **params) with named parameters.
 
-    ``func`` must accept an array of velocities (numpy-vectorised). ``positive`` names the
-    parameters that must stay positive (fitted as logarithms); default: all of them.
-    Example: ``ParametricLaw(lambda V, G0, a: G0 * (1 + a * np.log1p(V / 1e-4)), {"G0": 3e-14,
-    "a": 0.5})``.
+    For :func:`steady_sliding`, :func:`simulate_spatulae` and :func:`fit_steady_sliding` (which fits
+    its parameters by name).
+
+    Parameters
+    ----------
+    func : callable
+        ``func(V, **params)``; must accept an array of velocities (numpy-vectorised).
+    params : dict
+        The parameters by name, with their values (the starting values of a fit).
+    positive : tuple of str, optional
+        Parameters that must stay positive (fitted as logarithms); default: all of them.
+
+    Examples
+    --------
+    >>> import numpy as np, gecko
+    >>> law = gecko.ParametricLaw(lambda V, G0, a: G0 * (1 + a * np.log1p(V / 1e-4)),
+    ...                           {"G0": 3e-14, "a": 0.5})
+    >>> float(law(0.0))
+    3e-14
+    >>> law.replace(a=1.0).params
+    {'G0': 3e-14, 'a': 1.0}
     """
 
     func: Callable
