@@ -788,7 +788,7 @@ def simulate_spatulae(V: float, model: SlidingModel = FIG6_VISCOELASTIC, *, spat
 
 @dataclasses.dataclass(frozen=True)
 class ParametricLaw:
-    """A user detachment law G = func(V, **params) with named parameters.
+    """A user detachment law ``G = func(V, **params)`` with named parameters.
 
     For :func:`steady_sliding`, :func:`simulate_spatulae` and :func:`fit_steady_sliding` (which fits
     its parameters by name).
