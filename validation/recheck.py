@@ -11,12 +11,6 @@ statuses and turning-point counts, the verifier's counts where conclusive, and S
 its Fn and beta arrays, so the bitwise comparison needs none of the regenerable data.
 
     PYTHONPATH=<gecko> python3 -m validation.recheck [validation/data/stress_10000_states.npz] [--workers 2] [--json out.json]
-"""Re-run gecko (the one on PYTHONPATH) on a finished campaign's states and compare: Fn, beta and
-status bitwise against what the campaign recorded, and the turning-point counts against the
-verifier's sign changes of theta' (stored in the campaign). Shows that a later solver gives the
-campaign's numbers, without re-running the verifier (~1.5 CPU-h for 10,000 designs).
-
-    PYTHONPATH=<gecko> python3 -m validation.recheck validation/stress_10000.npz [--workers 2] [--json out.json]
 """
 from __future__ import annotations
 
