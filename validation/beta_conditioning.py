@@ -3,8 +3,8 @@
 gecko in beta but not in Fn (validation/results/stress.md, "beta investigation"), or (--by fn) of the
 states with the largest verified Fn differences.
 
-Route (no gecko code, no double-precision step): the same backward shooting as verify.py (models.md
-§1: from the contact edge theta2 = pi/2, theta2' = +sqrt(2 (w - Ft^2/(2 EA2))/EI2), across the
+Route (no gecko code, no double-precision step): the same backward shooting as verify.py (docs/theory/two_level_seta.md:
+from the contact edge theta2 = pi/2, theta2' = +sqrt(2 (w - Ft^2/(2 EA2))/EI2), across the
 joint, down to the base), but integrated by a Taylor-series method of order 40 in mpmath at 60
 digits (series of sin/cos by the usual recurrences), so the rounding amplification exp(l sqrt(N/EI))
 of the strongly tensioned, hyperbolic states (up to ~1e12 here) costs nothing.  The root Fn* of

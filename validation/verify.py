@@ -1,4 +1,4 @@
-"""Independent verification of two-level seta critical states by ODE shooting (models.md §1).
+"""Independent verification of two-level seta critical states by ODE shooting (docs/theory/two_level_seta.md).
 
 Nothing here uses gecko: for a state (Ft, Fn, beta) returned by the solver, the governing equations
 

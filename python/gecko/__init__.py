@@ -6,9 +6,9 @@ Compiled kernels (the C++ header-only library, built here as ``gecko._core``), w
   symmetric forms ``carlson_rf``, ``carlson_rd``, ``carlson_rj``, ``carlson_rc``; all broadcast
   like numpy ufuncs and raise ``ValueError`` on a domain error (or give NaN with ``errors="nan"``).
 * ``gecko.seta``: ``TwoLevelSeta`` and its exact critical line of adhesion, ``SingleFiber``,
-  the Kendall and Rivlin peel lines, small-deformation formulas (models.md §1).
+  the Kendall and Rivlin peel lines, small-deformation formulas (docs/theory/two_level_seta.md).
 * ``gecko.friction``: curved-beam rigidity, force traces, detachment laws, steady sliding,
-  spatula simulation and fitting (models.md §2).
+  spatula simulation and fitting (docs/theory/frictional_adhesion.md).
 * ``gecko.scene``: declarative scenes (TOML or dict) that compute only what they ask for.
   Plotting lives in ``gecko.plot`` and is not imported here (it imports matplotlib).
 

@@ -43,16 +43,14 @@ def _domain_entry(name: str):
 # allowed range of each field, for bounds: (lower, upper, lower inclusive, text)
 _DOMAIN = {f: _domain_entry(f) for f in FIELDS}
 
-_EXTRA = "pip install gecko[sweep]"
+_EXTRA = 'pip install "gecko-adhesion[sweep]"'
 
 
 def _need(module: str, what: str):
-    import importlib
-    try:
-        return importlib.import_module(module)
-    except ImportError as exc:
-        raise ImportError(f"{what} needs the optional package {module.split('.')[0]!r} "
-                          f"({_EXTRA} installs pandas, pyarrow, dask[distributed] and scipy): {exc}") from None
+    # [sweep] installs pandas, pyarrow and scipy; [dask] installs dask[distributed]
+    from ._optional import require
+    extra = "dask" if module.split(".")[0] in ("dask", "distributed") else "sweep"
+    return require(module, what, extra)
 
 
 # ---- designs --------------------------------------------------------------------------------------
@@ -127,8 +125,36 @@ def _count(n, what="n") -> int:
 
 
 def design_grid(axes: Mapping[str, Sequence[float]], *, fixed: Optional[Mapping[str, float]] = None):
-    """Every combination of the values in ``axes`` ({name: values}); the first name varies slowest.
-    The other fields take ``fixed`` or the reference scene's values. Returns a DataFrame."""
+    """Every combination of the values in ``axes``; the first name varies slowest.
+
+    Parameters
+    ----------
+    axes : mapping
+        {name: values} over the design fields.
+    fixed : mapping, optional
+        Values of fields not sampled; the rest take the reference scene's values.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per design, one column per design field (``FIELDS``).
+
+    Raises
+    ------
+    ValueError
+        If a name is not a design field or a list of values is empty.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> g = gecko.design_grid({"EI1": [1, 2], "alpha2": [0.1, 0.2]}, fixed={"EA2": 100})
+    >>> g[["EI1", "alpha2", "EA2"]]
+       EI1  alpha2    EA2
+    0  1.0     0.1  100.0
+    1  1.0     0.2  100.0
+    2  2.0     0.1  100.0
+    3  2.0     0.2  100.0
+    """
     if not isinstance(axes, Mapping) or not axes:
         raise ValueError("axes: need a non-empty mapping {name: [values]}; names: " + ", ".join(FIELDS))
     _check_fields(axes, "axes")
@@ -144,8 +170,40 @@ def design_grid(axes: Mapping[str, Sequence[float]], *, fixed: Optional[Mapping[
 
 def random_designs(bounds: Mapping[str, Any], n: int, *, seed: Optional[int] = None,
                    fixed: Optional[Mapping[str, float]] = None):
-    """``n`` designs drawn independently and uniformly within ``bounds`` ({name: (lower, upper)} or
-    (lower, upper, "log") for log-uniform) by numpy's default generator seeded with ``seed``."""
+    """``n`` designs drawn independently and uniformly within ``bounds``.
+
+    Parameters
+    ----------
+    bounds : mapping
+        {name: (lower, upper)}, or (lower, upper, "log") for a log-uniform scale, over the design
+        fields; each range inside the field's admissible range.
+    n : int
+        Number of designs, >= 1.
+    seed : int, optional
+        Seed of numpy's default generator.
+    fixed : mapping, optional
+        Values of fields not sampled; the rest take the reference scene's values.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per design, one column per design field (``FIELDS``).
+
+    Raises
+    ------
+    ValueError
+        If a name is not a design field, a range is outside the field's domain, or ``n`` < 1.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> d = gecko.random_designs({"EI2": (0.5, 4.0, "log"), "l2": (0.05, 0.2)}, n=3, seed=1)
+    >>> d[["EI2", "l2"]].round(4)
+          EI2      l2
+    0  1.4494  0.1926
+    1  0.6748  0.1923
+    2  0.9563  0.1135
+    """
     parsed = parse_bounds(bounds)
     n = _count(n)
     unit = np.random.default_rng(seed).random((n, len(parsed)))
@@ -163,8 +221,40 @@ def _qmc(kind: str, d: int, seed, **kw):
 
 def sobol_designs(bounds: Mapping[str, Any], n: int, *, seed: Optional[int] = None, scramble: bool = True,
                   fixed: Optional[Mapping[str, float]] = None):
-    """``n`` designs from a (scrambled) Sobol sequence over ``bounds`` (scipy.stats.qmc); a power of
-    two for ``n`` keeps the sequence's balance."""
+    """``n`` designs from a (scrambled) Sobol sequence over ``bounds`` (scipy.stats.qmc).
+
+    A power of two for ``n`` keeps the sequence's balance. Needs scipy (the ``[sweep]`` extra).
+
+    Parameters
+    ----------
+    bounds : mapping
+        {name: (lower, upper)}, or (lower, upper, "log") for a log-uniform scale, over the design
+        fields; each range inside the field's admissible range.
+    n : int
+        Number of designs, >= 1.
+    seed : int, optional
+        Seed of the scrambling.
+    scramble : bool, optional
+        Scramble the sequence (default True).
+    fixed : mapping, optional
+        Values of fields not sampled; the rest take the reference scene's values.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per design, one column per design field (``FIELDS``).
+
+    Raises
+    ------
+    ValueError
+        If a name is not a design field, a range is outside the field's domain, or ``n`` < 1.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> gecko.sobol_designs({"alpha2": (0.0, 0.6)}, n=4, seed=1)["alpha2"].round(4).tolist()
+    [0.1717, 0.5428, 0.3156, 0.0948]
+    """
     parsed = parse_bounds(bounds)
     n = _count(n)
     eng = _qmc("sobol", len(parsed), seed, scramble=scramble)
@@ -177,8 +267,39 @@ def sobol_designs(bounds: Mapping[str, Any], n: int, *, seed: Optional[int] = No
 
 def latin_hypercube_designs(bounds: Mapping[str, Any], n: int, *, seed: Optional[int] = None,
                             fixed: Optional[Mapping[str, float]] = None):
-    """``n`` designs of a Latin hypercube over ``bounds`` (scipy.stats.qmc.LatinHypercube): each
-    parameter's range is cut into n equal strata, one design in each."""
+    """``n`` designs of a Latin hypercube over ``bounds`` (scipy.stats.qmc.LatinHypercube).
+
+    Each parameter's range is cut into ``n`` equal strata, one design in each. Needs scipy.
+
+    Parameters
+    ----------
+    bounds : mapping
+        {name: (lower, upper)}, or (lower, upper, "log") for a log-uniform scale, over the design
+        fields; each range inside the field's admissible range.
+    n : int
+        Number of designs, >= 1.
+    seed : int, optional
+        Seed of the sample.
+    fixed : mapping, optional
+        Values of fields not sampled; the rest take the reference scene's values.
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per design, one column per design field (``FIELDS``).
+
+    Raises
+    ------
+    ValueError
+        If a name is not a design field, a range is outside the field's domain, or ``n`` < 1.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> d = gecko.latin_hypercube_designs({"alpha2": (0.0, 0.6)}, n=4, seed=1)
+    >>> sorted((d["alpha2"] * 4 / 0.6).astype(int).tolist())    # one design per stratum
+    [0, 1, 2, 3]
+    """
     parsed = parse_bounds(bounds)
     n = _count(n)
     unit = _qmc("lhs", len(parsed), seed).random(n)
@@ -188,8 +309,29 @@ def latin_hypercube_designs(bounds: Mapping[str, Any], n: int, *, seed: Optional
 def design_matrix(designs) -> np.ndarray:
     """The designs as a C-contiguous (n, 9) float64 array in the order of ``FIELDS``.
 
-    Accepts a DataFrame or a mapping of columns (a subset of the fields; the others take the
-    reference scene's values), an array of shape (n, 9), or a sequence of ``TwoLevelSeta``."""
+    Parameters
+    ----------
+    designs : pandas.DataFrame, mapping, array_like of shape (n, 9), or sequence of TwoLevelSeta
+        A table of some of the fields (the others take the reference scene's values), an array in
+        the order of ``FIELDS``, or seta objects.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (n, 9).
+
+    Raises
+    ------
+    ValueError
+        If a column is not a design field, the columns differ in length, or the shape is wrong.
+
+    Examples
+    --------
+    >>> from gecko.designs import design_matrix
+    >>> design_matrix({"EI1": [1.0, 2.0]})[:, :3]
+    array([[ 1.,  2., inf],
+           [ 2.,  2., inf]])
+    """
     from .seta import TwoLevelSeta
     if isinstance(designs, TwoLevelSeta):
         designs = [designs]

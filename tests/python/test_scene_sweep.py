@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-pd = pytest.importorskip("pandas", reason="sweeps need pandas (pip install gecko[sweep])")
+pd = pytest.importorskip("pandas", reason="sweeps need pandas (pip install \"gecko-adhesion[sweep]\")")
 
 import gecko  # noqa: E402
 from gecko.cli import main  # noqa: E402

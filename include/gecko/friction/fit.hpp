@@ -1,4 +1,4 @@
-// gecko/friction/fit.hpp — fit the steady-sliding model (eqs 9–10 of paper 000, models.md §2)
+// gecko/friction/fit.hpp — fit the steady-sliding model (eqs 9–10 of paper 000, docs/theory/frictional_adhesion.md)
 // to measured (V, F_par, F_perp) by Levenberg–Marquardt; beyond the paper, which fitted Fig 6
 // by eye.
 //

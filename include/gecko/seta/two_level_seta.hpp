@@ -1,6 +1,6 @@
 // gecko/seta/two_level_seta.hpp — the two-level seta design and its admissible range.
 //
-// models.md §1, "Geometry and unknowns": a beam (level 1: EI1, EA1, length l1, clamped at
+// docs/theory/two_level_seta.md, "Geometry and unknowns": a beam (level 1: EI1, EA1, length l1, clamped at
 // theta1(0) = alpha1) carrying a spatula (level 2: EI2, EA2, length l2, kinked by alpha2 at the
 // joint) in side contact with a rigid substrate, work of adhesion w. Defaults: the paper's
 // reference scene (non-dimensional, w = 1, l1 = 1): EI1 = 5, EI2 = 2, EA1 = inf, EA2 = 50,
@@ -31,7 +31,7 @@ struct TwoLevelSeta {
 };
 
 // (Ft)max = sqrt(2 EA2 w): beyond it the contact edge cannot satisfy Griffith's condition
-// 1/2 EI2 theta2'(a)^2 + Ft^2/(2 EA2) = w (models.md §1, "Critical line of adhesion").
+// 1/2 EI2 theta2'(a)^2 + Ft^2/(2 EA2) = w (docs/theory/two_level_seta.md, "Critical line of adhesion").
 template <class T>
 inline T ft_max(const TwoLevelSeta<T>& s) {
   using std::sqrt;

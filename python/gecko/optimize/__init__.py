@@ -1,6 +1,6 @@
 """gecko.optimize — gradient-based, multi-start design optimisation of the two-level seta.
 
-models.md §1 (critical line of adhesion and its characteristic quantities); the paper's closing
+docs/theory/two_level_seta.md (critical line of adhesion and its characteristic quantities); the paper's closing
 discussion (001, §3.2 "Tunability", last paragraph) on optimising the structural parameters: first
 keep the seta non-sticky at rest, (Fn)0 > 0 (eq 22), then make the maximum pull-off force large.
 

@@ -113,26 +113,68 @@ def optimize_seta(objective, bounds: dict, constraints=(), *, base=None, starts:
                   method: str = "SLSQP", ft: Optional[float] = None, maxiter: int = 100,
                   tol: float = 1e-10, feasibility_tol: float = 1e-6, include_base: bool = True,
                   quadrature_nodes: int = 48) -> SetaOptimum:
-    """Maximise a built-in objective of the two-level seta over a box of parameters (module docstring).
+    """Maximise an objective of the two-level seta over a box of design parameters.
 
-    objective: "max_pull_off" | "area" | "pull_off_at" (with ``ft``), or a user ``Objective`` /
-    callable of the design dict (its non-finite value is a ``ValueError``). bounds: {parameter: (lo, hi)}
-    over the nine fields of ``TwoLevelSeta`` and "EI2/EI1", "l2/l1", "alpha1+alpha2"; lo < hi, finite,
-    inside the model's domain, else ``ValueError`` naming the parameter and its allowed range.
-    constraints: any of "not_sticky", ("fn0_min", m), {"not_sticky": True, "fn0_min": m},
-    ``Constraint(name, fun, jac)`` or callables g(design) >= 0. base: the fixed parameters (a
-    ``TwoLevelSeta`` or a dict, may fix a derived one); default the paper's reference scene.
-    starts: number of Sobol starts (deterministic with ``seed``; the first is ``base`` when inside
-    the bounds and ``include_base``). method: "SLSQP" (the only one: bounds, inequality
-    constraints and ``jac`` together). maxiter bounds SLSQP's iterations per start, so an
-    impossible problem ends with status "infeasible", never a loop.
+    SLSQP from several Sobol starts, with the exact gradient of the critical state with respect to
+    the design (implicit differentiation, no finite differences). Each start's result is checked for
+    first-order optimality (KKT residual); needs scipy (the ``[optimize]`` extra).
+
+    Parameters
+    ----------
+    objective : str, Objective or callable
+        "max_pull_off", "area" or "pull_off_at" (with ``ft``), an :class:`Objective`, or a callable
+        of the design dict (a non-finite value raises ``ValueError``).
+    bounds : dict
+        {parameter: (lo, hi)} over the nine fields of ``TwoLevelSeta`` and "EI2/EI1", "l2/l1",
+        "alpha1+alpha2"; lo < hi, finite, inside the model's domain.
+    constraints : sequence, optional
+        Any of "not_sticky", ("fn0_min", m), {"not_sticky": True, "fn0_min": m},
+        :class:`Constraint` objects or callables g(design) >= 0.
+    base : TwoLevelSeta or dict, optional
+        The fixed parameters (may fix a derived one); default the paper's reference scene.
+    starts : int, optional
+        Number of Sobol starts (default 8); the first is ``base`` when inside the bounds and
+        ``include_base``.
+    seed : int, optional
+        Seed of the starts (default 0): the result is deterministic.
+    method : {"SLSQP"}, optional
+        The only method: bounds, inequality constraints and ``jac`` together.
+    ft : float, optional
+        The shear force of "pull_off_at" (required there, not allowed otherwise).
+    maxiter : int, optional
+        SLSQP iterations per start (default 100), so an impossible problem ends "infeasible".
+    tol, feasibility_tol : float, optional
+        SLSQP's tolerance (default 1e-10) and the constraint violation accepted as feasible (1e-6).
+    include_base : bool, optional
+        Start from ``base`` too (default True).
+    quadrature_nodes : int, optional
+        Gauss nodes of the "area" objective (default 48).
+
+    Returns
+    -------
+    SetaOptimum
+        The optimum, its value, active constraints, status ("optimal", "infeasible", "failed",
+        "not_converged") and the first-order check.
+
+    Raises
+    ------
+    ValueError
+        If the objective, a bound, a constraint or an option is not allowed (naming it and the
+        allowed range).
+    gecko._optional.MissingOptionalDependency
+        If scipy is not installed.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> best = gecko.optimize_seta("max_pull_off", {"alpha2": (0.05, 1.0)}, ["not_sticky"], starts=2)
+    >>> best.status, round(best.design["alpha2"], 4), best.active_constraints
+    ('optimal', 0.5472, ['(Fn)0 >= 0'])
     """
     t0 = time.perf_counter()
-    try:
-        import scipy.optimize  # noqa: F401
-        import scipy.stats  # noqa: F401
-    except ImportError:  # pragma: no cover - scipy is in the test environment
-        raise ImportError("gecko.optimize_seta needs scipy (pip install gecko[optimize])") from None
+    from .._optional import require
+    require("scipy.optimize", "gecko.optimize_seta", "optimize")
+    require("scipy.stats", "gecko.optimize_seta", "optimize")
     if isinstance(objective, str):
         if objective not in _OBJECTIVE_FUNCS:
             raise ValueError(f"objective = {objective!r} is not allowed: need one of {OBJECTIVES}, "
@@ -158,6 +200,9 @@ def optimize_seta(objective, bounds: dict, constraints=(), *, base=None, starts:
         raise ValueError(f"starts = {starts!r}: need an integer in [1, 1024]")
     if not (isinstance(maxiter, (int, np.integer)) and 1 <= maxiter <= 10000):
         raise ValueError(f"maxiter = {maxiter!r}: need an integer in [1, 10000]")
+    from .._vectorize import check_tolerance
+    tol = check_tolerance(tol, "tol", allow_none=False)
+    feasibility_tol = check_tolerance(feasibility_tol, "feasibility_tol", allow_none=False)
     if not (isinstance(quadrature_nodes, (int, np.integer)) and 4 <= quadrature_nodes <= 400):
         raise ValueError(f"quadrature_nodes = {quadrature_nodes!r}: need an integer in [4, 400]")
     base_d = _base_dict(base)
@@ -335,21 +380,40 @@ _SCENE_KEYS = {"objective", "ft", "vary", "constraints", "starts", "seed", "fixe
 
 
 def optimize_from_scene(spec: dict) -> SetaOptimum:
-    """Runs ``optimize_seta`` from a scene's ``[optimize]`` table given as a plain dict.
+    """Run :func:`optimize_seta` from a scene's ``[optimize]`` table given as a plain dict.
 
-    Keys (anything else is a ValueError):
+    Parameters
+    ----------
+    spec : dict
+        Keys (anything else is a ``ValueError``):
 
-    * ``objective`` (required): "max_pull_off" | "area" | "pull_off_at".
-    * ``ft``: float, the shear force of "pull_off_at" (required there, not allowed otherwise).
-    * ``vary`` (required): {parameter: [lower, upper]}; parameters: EI1, EI2, EA1, EA2, l1, l2,
-      alpha1, alpha2, w, "EI2/EI1", "l2/l1", "alpha1+alpha2".
-    * ``constraints``: {"not_sticky": bool, "fn0_min": float}.
-    * ``fixed``: {parameter: value} for parameters not varied (same names; default: the paper's
-      reference scene). A parameter name may also be given at the top level of the table
-      (e.g. ``EA2 = 50``); the same parameter in both places is an error.
-    * ``starts`` (int, default 8), ``seed`` (int, default 0), ``method`` ("SLSQP"),
-      ``maxiter`` (int, default 100), ``include_base`` (bool, default true),
-      ``quadrature_nodes`` (int, default 48, for "area").
+        * ``objective`` (required): "max_pull_off", "area" or "pull_off_at";
+        * ``ft``: the shear force of "pull_off_at" (required there, not allowed otherwise);
+        * ``vary`` (required): {parameter: [lower, upper]}; parameters: EI1, EI2, EA1, EA2, l1, l2,
+          alpha1, alpha2, w, "EI2/EI1", "l2/l1", "alpha1+alpha2";
+        * ``constraints``: {"not_sticky": bool, "fn0_min": float};
+        * ``fixed``: {parameter: value} for parameters not varied (default: the paper's reference
+          scene); a parameter may also be given at the top level of the table (e.g. ``EA2 = 50``),
+          but not in both places;
+        * ``starts`` (default 8), ``seed`` (0), ``method`` ("SLSQP"), ``maxiter`` (100),
+          ``include_base`` (true), ``quadrature_nodes`` (48, for "area").
+
+    Returns
+    -------
+    SetaOptimum
+
+    Raises
+    ------
+    ValueError
+        If a key or a value is not allowed.
+
+    Examples
+    --------
+    >>> from gecko.optimize import optimize_from_scene
+    >>> opt = optimize_from_scene({"objective": "max_pull_off", "vary": {"alpha2": [0.05, 1.0]},
+    ...                            "constraints": {"not_sticky": True}, "starts": 2})
+    >>> opt.status, round(opt.design["alpha2"], 4)
+    ('optimal', 0.5472)
     """
     if not isinstance(spec, dict):
         raise ValueError(f"optimize table must be a dict, got {type(spec).__name__}")

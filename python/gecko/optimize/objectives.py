@@ -142,7 +142,7 @@ def _refine_minimum(seta: TwoLevelSeta, scale: float):
 
 
 # Force-like parameters: Fn(l Ft; l p_F, p_L) = l Fn(Ft; p) for the stiffnesses and w (the governing
-# equations are homogeneous in force units with the lengths fixed, models.md §1), so by Euler's
+# equations are homogeneous in force units with the lengths fixed, docs/theory/two_level_seta.md), so by Euler's
 # theorem Ft dFn/dFt = Fn - sum_F p_F dFn/dp_F: the exact slope of the line from the exact design
 # sensitivities. EA = inf drops out (its term is 0 x inf, and it stays inf under the scaling).
 _FORCE_LIKE = [_INDEX[f] for f in ("EI1", "EI2", "EA1", "EA2", "w")]

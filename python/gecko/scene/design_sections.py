@@ -89,7 +89,8 @@ class SweepSpec:
         if self.designs == "grid":
             return ds.design_grid(self.grid, fixed=self.fixed)
         if self.designs == "table":
-            import pandas as pd
+            from .._optional import require
+            pd = require("pandas", "a [sweep] design table", "sweep")
             t = pd.read_parquet(self.table) if self.table.endswith(".parquet") else pd.read_csv(self.table)
             for k, v in self.fixed.items():
                 if k not in t.columns:
@@ -122,7 +123,8 @@ def _name(v, key: str, default: str) -> str:
         return default
     if not isinstance(v, str) or not v or v[0] == "." or not all(c.isalnum() or c in "-_." for c in v):
         raise SceneError(f"{v!r} is not allowed: need a file-name stem of letters, digits, '-', '_', '.'", key=key)
-    return v
+    from .limits import check_name
+    return check_name(v, key)
 
 
 def _fixed(table, key: str, allowed) -> Dict[str, float]:

@@ -2,7 +2,7 @@
 
 A model declares its parameters (:class:`Param`: default, kind, allowed range) and its outputs
 (name -> parser of the output's table). Nothing here computes: the planner decides which kernels
-run, the runner runs them. Defaults are the papers' reference values (models.md §1 reference
+run, the runner runs them. Defaults are the papers' reference values (docs/theory/two_level_seta.md reference
 scene; §2 Figs 4, 6, 8).
 """
 from __future__ import annotations
@@ -109,7 +109,7 @@ CHARACTERISTIC_LABELS = {
     "small_fn0": "$(\\bar F_n)_0$, small deformation (eq 19)",
     "slope_k": "slope $k = d\\bar F_n/d\\bar F_t$",
     "small_slope_k": "slope $k$, small deformation (eq 18)",
-    # k = dFn/dFt (models.md). The paper's plots have Fn horizontal and call the slope there
+    # k = dFn/dFt (docs/theory/two_level_seta.md). The paper's plots have Fn horizontal and call the slope there
     # k_paper = dFt/dFn, so the paper's "1/|k|" (Fig 5b) is |dFn/dFt| = abs_slope_k.
     "abs_slope_k": "$|d\\bar F_n/d\\bar F_t|$ (the paper's $1/|k|$)",
     "small_abs_slope_k": "$|d\\bar F_n/d\\bar F_t|$, small deformation (eq 21)",
@@ -138,7 +138,7 @@ def _add(m: Model) -> None:
 _add(Model(
     "two_level_seta", "two-level seta", SETA_PARAMS,
     ("critical_line", "characteristics", "shapes", "sensitivities", "linear_line", "csv"),
-    "Two-level seta of directional adhesion (models.md §1); defaults: the paper's reference scene.",
+    "Two-level seta of directional adhesion (docs/theory/two_level_seta.md); defaults: the paper's reference scene.",
     characteristics=SETA_EXACT + SETA_SMALL))
 _add(Model(
     "single_fiber", "single-level fiber",
@@ -148,7 +148,7 @@ _add(Model(
      Param("alpha", math.pi / 3, "base angle from the substrate normal", check=_open_right_angle, symbol="α"),
      Param("w", 1.0, "work of adhesion", check=_positive, symbol="w")),
     ("critical_line", "characteristics", "csv"),
-    "Single-level fiber of He et al. 2013 (models.md §1, Fig 4).", characteristics=("fn0",)))
+    "Single-level fiber of He et al. 2013 (docs/theory/two_level_seta.md, Fig 4).", characteristics=("fn0",)))
 _add(Model(
     "kendall", "Kendall model",
     (Param("EA", 50.0, "axial stiffness of the film (inf: Rivlin)", check=_positive_or_inf, symbol="EA/w"),

@@ -10,7 +10,10 @@ from .models import CHARACTERISTIC_LABELS
 
 
 def _figure(size):
-    from matplotlib.figure import Figure  # no pyplot: no GUI backend, no global state
+    from .._optional import require
+    # no pyplot: no GUI backend, no global state
+    Figure = require("matplotlib.figure", "drawing a scene's plots (or run it without figures)",
+                     "plot").Figure
     return Figure(figsize=size, layout="constrained") if _has_layout() else Figure(figsize=size)
 
 

@@ -134,6 +134,31 @@ class PlotSpec:
 
 @dataclass
 class Scene:
+    """A validated scene (:func:`load_scene`).
+
+    Attributes
+    ----------
+    title, description : str
+        As in the file.
+    resolution : float
+        Scale of every grid's number of points.
+    studies : list of Study
+        Each a model, its designs (:class:`Point`) and the outputs asked for.
+    plots : list of PlotSpec
+        The figures to draw.
+    source : str
+        The file, or ``"<dict>"``.
+    sweep, optimize : optional
+        The ``[sweep]`` and ``[optimize]`` sections, when present.
+
+    Examples
+    --------
+    >>> from gecko.scene import load_scene
+    >>> sc = load_scene({"title": "t", "study": [{"name": "k", "model": "kendall",
+    ...                                          "outputs": {"characteristics": True}}]})
+    >>> sc.study("k").model.name
+    'kendall'
+    """
     title: str
     description: str
     resolution: float
@@ -207,7 +232,35 @@ def _symbol(model: Model, name: str) -> str:
 # ---- parsing -----------------------------------------------------------------------------------
 
 def load_scene(scene, *, resolution: Optional[float] = None) -> Scene:
-    """A validated :class:`Scene` from a TOML path or a dict; ``resolution`` overrides the file's."""
+    """A validated scene from a TOML path or a dict.
+
+    Parameters
+    ----------
+    scene : str, os.PathLike, dict or Scene
+        A TOML file, the same structure as a dict, or a Scene (returned as is).
+    resolution : float, optional
+        Scales the number of points of every grid; overrides the file's ``resolution``.
+
+    Returns
+    -------
+    Scene
+        Title, description, studies (each with its model, designs and outputs), plots, and the
+        optional ``[sweep]`` and ``[optimize]`` sections.
+
+    Raises
+    ------
+    SceneError
+        If the scene cannot be read or is not valid; the message names the file and the key.
+
+    Examples
+    --------
+    >>> from gecko.scene import load_scene
+    >>> scene = {"title": "two angles", "study": [{"name": "seta", "model": "two_level_seta",
+    ...          "parameters": {"alpha2": [0.3, 0.5]}, "outputs": {"characteristics": ["fn0"]}}]}
+    >>> sc = load_scene(scene)
+    >>> sc.title, len(sc.studies[0].points)
+    ('two angles', 2)
+    """
     if isinstance(scene, Scene):
         return scene
     if isinstance(scene, dict):
@@ -216,11 +269,15 @@ def load_scene(scene, *, resolution: Optional[float] = None) -> Scene:
 
 
 def parse_scene(data: dict, source: str = "<dict>", *, resolution: Optional[float] = None) -> Scene:
+    from .limits import check_file_names, check_nesting, check_work
     try:
+        check_nesting(data)
         scene = _parse(data, resolution, None if source == "<dict>" else str(Path(source).resolve().parent))
+        scene.source = source
+        check_file_names(scene)
+        check_work(scene)  # before anything is computed (gecko.scene.limits)
     except SceneError as err:
         raise err.at(source=source) from None
-    scene.source = source
     return scene
 
 
@@ -295,8 +352,8 @@ def _parse_study(s, key: str, res: float) -> Study:
         raise SceneError(f"unknown model {model_name!r}; allowed models: " + ", ".join(MODELS), key=f"{key}.model")
     model = MODELS[model_name]
     name = s.get("name", model_name)
-    if not isinstance(name, str) or not name or any(c in name for c in "/\\\0"):
-        raise SceneError(f"need a non-empty string without slashes; got {name!r}", key=f"{key}.name")
+    from .limits import check_name
+    check_name(name, f"{key}.name", "study name")
     combine = s.get("combine", "cross")
     if combine not in ("cross", "zip"):
         raise SceneError(f"{combine!r} is not allowed: need 'cross' (every combination) or 'zip' (pairwise)",
@@ -566,6 +623,8 @@ def _parse_plot(p, key: str, studies: List[Study]) -> PlotSpec:
     if not isinstance(name, str) or not name or not all(c.isalnum() or c in "-_." for c in name) or name[0] == ".":
         raise SceneError(f"{name!r} is not allowed: need a file-name stem of letters, digits, '-', '_', '.'",
                          key=f"{key}.name")
+    from .limits import check_name
+    check_name(name, f"{key}.name", "plot name")
     wanted = PLOT_KINDS[kind]
     names = p.get("studies")
     if names is None:
