@@ -81,6 +81,10 @@ def main(argv=None):
     out = dict(campaign=os.path.relpath(args.npz), designs=int(n), states=int(status.size),
                Fn_bitwise_equal=bool(fn_equal), beta_bitwise_equal=bool(beta_equal),
                status_equal=bool(np.array_equal(status, z["status"])),
+               # states the campaign solved that are now flagged inadmissible (status 7, values kept)
+               now_inadmissible=int(((status == 7) & (z["status"] == 0)).sum()),
+               status_equal_but_inadmissible=bool(np.array_equal(np.where((status == 7) & (z["status"] == 0), 0,
+                                                                          status), z["status"])),
                turning_counts_changed=int(((tpb != z["tpb"]) | (tps != z["tps"]))[ok].sum()),
                turning_counts_checked=int(checked.sum()), turning_counts_agree=int(agree.sum()),
                seconds=round(time.time() - t0, 1))

@@ -63,6 +63,10 @@ def seta_solve(params: _F64, Ft: float, Fn: float = ..., theta_joint: float = ..
 def seta_characteristics(params: _F64, ft_end: float = ...) -> dict[str, Any]: ...
 def seta_batch(designs: _F64, Ft: _F64, errors: int = 0, threads: int = 1, tolerance: float = ...) -> dict[str, Any]: ...
 def seta_small_deformation(params: _F64) -> dict[str, Any]: ...
+# The forward problem at (Fn, Ft) (flat, equal length): columns a, contact_length, theta_joint, ...,
+# status, equilibria; with all=True every equilibrium per element (element, summary_status).
+def seta_contact_state(params: _F64, Fn: _F64, Ft: _F64, errors: int = 0, all: bool = False,
+                       scan_points: int = 0, threads: int = 0) -> dict[str, Any]: ...
 # Design sweep (gecko.design_sweep): characteristics of n designs (flat n*9), depth 0 closed forms,
 # 1 + natural state (fn0, slope_k, sticky_at_rest), 2 + the line to its end; flat columns of length
 # n (float64; int8 sticky_at_rest, small_non_sticky, min_fn_interior; int32 status, line_end, folds).
@@ -142,3 +146,6 @@ class FitStatus(enum.IntEnum):
     converged = 0
     max_iterations = 1
     singular = 2
+    not_identifiable = 3
+    no_progress = 4
+    non_finite = 5

@@ -23,8 +23,11 @@ import numpy as np
 from ._integrity import (ResultFileWarning, atomic_write, describe_os_error, remove_with_manifest, verify,
                          write_manifest)
 from ._locking import FolderLock
+from .seta import STATUS as _seta_status
 
-_STATUS = (0, 1, 3, 5, 6)
+# every status code of gecko.STATUS (a sweep uses 0, 1, 3, 5, 6 today; a code added to the solver
+# must not make every stored chunk look damaged)
+_STATUS = tuple(sorted(_seta_status))
 
 
 class SweepInterrupted(KeyboardInterrupt):

@@ -48,6 +48,7 @@ __all__ = [
     "SlidingModel", "FIG6_VISCOELASTIC", "FIG6_PLASTIC", "steady_sliding", "SteadySliding", "FitStatus",
     # beyond the paper
     "simulate_spatulae", "SpatulaSimulation", "fit_steady_sliding", "SteadySlidingFit",
+    "ParametricLaw",
 ]
 
 def _matrix(K, name: str = "K") -> np.ndarray:
@@ -234,7 +235,23 @@ def rigidity(C, *, errors: str = "raise"):
 # ---- paths and force traces (eqs 1-3, 11-13; Figs 4 and 8) -------------------------------
 
 class DisplacementPath(NamedTuple):
-    """Vertices of a piecewise-linear path: at time ``t[i]`` the tip is at ``(d_par[i], d_perp[i])``."""
+    """Vertices of a piecewise-linear displacement path for :func:`force_trace`.
+
+    At time ``t[i]`` the tip is at ``(d_par[i], d_perp[i])``; between vertices it moves linearly.
+
+    Attributes
+    ----------
+    t : tuple of float
+        Strictly increasing times.
+    d_par, d_perp : tuple of float
+        Lateral and normal displacements at those times.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> gecko.FIG4_SPATULA_PATH.d_perp               # press in, then drag at fixed depth
+    (0.0, 1.0, 1.0)
+    """
 
     t: tuple
     d_par: tuple
@@ -266,7 +283,24 @@ def paper_rigidity() -> np.ndarray:
 
 
 class ForceTrace(NamedTuple):
-    """A force trace, arrays ready to plot: time, displacement and force components."""
+    """A force trace from :func:`force_trace`, arrays ready to plot.
+
+    Attributes
+    ----------
+    t : numpy.ndarray
+        Sample times.
+    d_par, d_perp : numpy.ndarray
+        Displacements of the tip.
+    f_par, f_perp : numpy.ndarray
+        Forces f = K d (f_perp < 0: tensile).
+
+    Examples
+    --------
+    >>> import gecko
+    >>> tr = gecko.force_trace()
+    >>> float(tr.f_perp.max()), float(tr.f_perp.min())   # compressive, then tensile
+    (2.0, -7.0)
+    """
 
     t: np.ndarray
     d_par: np.ndarray
@@ -550,7 +584,24 @@ FIG6_PLASTIC = SlidingModel(N=1e5, K=((6.0, -5.0), (-5.0, 5.0)), f_par1=6e-7, f_
 
 
 class SteadySliding(NamedTuple):
-    """Time-averaged forces of the N spatulae, stretch at detachment and t_on = stretch / V."""
+    """Mean forces of steady sliding, from :func:`steady_sliding`.
+
+    Attributes
+    ----------
+    F_par, F_perp : float or numpy.ndarray
+        Time-averaged lateral and normal force of the N spatulae (F_perp < 0: tensile).
+    stretch : float or numpy.ndarray or None
+        Lateral stretch at detachment (None with ``forces_only=True``).
+    t_on : float or numpy.ndarray or None
+        Attached time per cycle, stretch / V.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> r = gecko.steady_sliding(1e-4)
+    >>> round(float(r.F_par), 4), r.t_on > 0
+    (0.0424, True)
+    """
 
     F_par: object
     F_perp: object
@@ -639,7 +690,28 @@ def steady_sliding(V, model: SlidingModel = FIG6_VISCOELASTIC, *, t_off: float =
 # ---- beyond the paper: stochastic check and fit -------------------------------------------
 
 class SpatulaSimulation(NamedTuple):
-    """Result of :func:`simulate_spatulae`: the force of N spatulae estimated from M simulated."""
+    """Result of :func:`simulate_spatulae`: the force of N spatulae estimated from M simulated.
+
+    Attributes
+    ----------
+    mean_par, mean_perp : float
+        Time averages of F(t) over the simulated duration.
+    std_par, std_perp : float
+        Standard deviations of F(t) over the sample times (the fluctuation).
+    stretch, t_on : float
+        Stretch at detachment and attached time per cycle.
+    detachments : int
+        Detachments simulated.
+    t, F_par, F_perp : numpy.ndarray
+        Sample times (midpoints) and F(t) there.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> sim = gecko.simulate_spatulae(1e-4, spatulae=200, seed=1)
+    >>> sim.detachments > 0, sim.F_par.shape
+    (True, (200,))
+    """
 
     mean_par: float      # time average of F_par(t) over [0, duration]
     mean_perp: float
@@ -714,17 +786,88 @@ def simulate_spatulae(V: float, model: SlidingModel = FIG6_VISCOELASTIC, *, spat
                              r["F_perp"])
 
 
+@dataclasses.dataclass(frozen=True)
+class ParametricLaw:
+    """A user detachment law ``G = func(V, **params)`` with named parameters, for
+    :func:`steady_sliding`, :func:`simulate_spatulae` and :func:`fit_steady_sliding`.
+
+    ``func`` must accept an array of velocities (numpy-vectorised). ``positive`` names the
+    parameters that must stay positive (fitted as logarithms); default: all of them.
+    Example: ``ParametricLaw(lambda V, G0, a: G0 * (1 + a * np.log1p(V / 1e-4)), {"G0": 3e-14,
+    "a": 0.5})``.
+    """
+
+    func: Callable
+    params: dict
+    positive: Optional[tuple] = None
+
+    def __call__(self, V):
+        return self.func(V, **self.params)
+
+    def replace(self, **params) -> "ParametricLaw":
+        return dataclasses.replace(self, params={**self.params, **params})
+
+
 class SteadySlidingFit(NamedTuple):
-    """Result of :func:`fit_steady_sliding`."""
+    """Result of :func:`fit_steady_sliding`.
+
+    Attributes
+    ----------
+    model : SlidingModel
+        The fitted model.
+    names : tuple of str
+        The free parameters.
+    values, standard_errors : numpy.ndarray
+        Their estimates and standard errors (delta method from the fit coordinates).
+    covariance : numpy.ndarray
+        Covariance of the estimates.
+    rss : float
+        Sum of squared unweighted residuals (N**2).
+    iterations : int
+        Levenberg-Marquardt iterations.
+    status : str
+        "converged" (a first-order criterion holds at a finite chi**2; ``reason`` says which),
+        "not_identifiable" (converged, but the data do not determine the directions listed in
+        ``undetermined``; see the profile intervals), "max_iterations", "no_progress" or
+        "non_finite" (the fitted values or rss overflow).
+    reason : str
+        Why the fit stopped.
+    chi2, dof, condition : float, int, float
+        Weighted chi**2, degrees of freedom, condition number of the column-scaled J^T J.
+    undetermined : tuple of str
+        Directions the data cannot determine.
+    profile_lower, profile_upper : numpy.ndarray or None
+        Profile-likelihood intervals (chi**2 rise at the ``profile_level`` quantile; NaN when not
+        computed, +-inf where the profile never rises enough).
+    sigma_known : bool
+        Whether the covariance takes sigma as known (not rescaled by the reduced chi**2).
+
+    Examples
+    --------
+    >>> import numpy as np, gecko
+    >>> V = np.logspace(-6, -2, 20)
+    >>> r = gecko.steady_sliding(V)
+    >>> fit = gecko.fit_steady_sliding(V, r.F_par, r.F_perp, fit_f_par1=False)
+    >>> fit.status, len(fit.values) == len(fit.names)
+    ('converged', True)
+    """
 
     model: SlidingModel           # the fitted model
     names: tuple                  # free parameters
     values: np.ndarray            # their estimates
-    standard_errors: np.ndarray   # and standard errors (s**2 (J^T J)^-1, delta method)
+    standard_errors: np.ndarray   # and standard errors (delta method from the fit coordinates)
     covariance: np.ndarray
-    rss: float
+    rss: float                    # sum of squared unweighted residuals (N**2)
     iterations: int
-    status: str                   # "converged", "max_iterations" or "singular"
+    status: str
+    reason: str = ""
+    chi2: float = float("nan")    # sum of squared weighted residuals
+    dof: int = 0
+    condition: float = float("nan")   # of the column-scaled J^T J
+    undetermined: tuple = ()
+    profile_lower: Optional[np.ndarray] = None
+    profile_upper: Optional[np.ndarray] = None
+    sigma_known: bool = False
 
     @property
     def status_code(self) -> "FitStatus":
@@ -732,70 +875,147 @@ class SteadySlidingFit(NamedTuple):
         return FitStatus[self.status]
 
 
+def _sigma_array(s, n, name):
+    a = np.asarray(s, dtype=np.float64)
+    if a.ndim > 1 or (a.ndim == 1 and a.size != n):
+        raise ValueError(f"{name} must be a scalar or have one entry per velocity ({n}), got shape "
+                         f"{a.shape}")
+    a = np.ascontiguousarray(np.broadcast_to(a, (n,)), dtype=np.float64)
+    bad = ~((a > 0) & np.isfinite(a))
+    if np.any(bad):
+        i = int(np.flatnonzero(bad)[0])
+        raise ValueError(f"gecko.fit_steady_sliding: {name}[{i}] = {float(a[i])!r} is out of range: need "
+                         "0 < sigma < inf")
+    return a
+
+
 def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC, *,
                        fit_f_par1: bool = True, fit_f_perp1: bool = True,
-                       fit_coupling: bool = False, max_iterations: int = 200) -> SteadySlidingFit:
-    """Levenberg-Marquardt fit of paper 000 eqs 9-10 to measured (V, F_par, F_perp).
+                       fit_coupling: bool = False, max_iterations: int = 200,
+                       sigma=None, absolute_sigma: Optional[bool] = None, profile: bool = False,
+                       profile_level: float = 0.6826894921370859,
+                       max_condition: float = 1e10) -> SteadySlidingFit:
+    """Weighted least-squares fit of eqs 9-10 to measured (V, F_par, F_perp).
 
-    Free: the law's (G0, V*, n) [viscoelastic] or (G0, V*) [Eyring], as logarithms so that they stay
-    positive, and ``f_par1``, ``f_perp1`` and ``K[0][1]`` as chosen; ``N``, ``K[0][0]`` and
-    ``K[1][1]`` are held at the guess's values (only combinations with G0 are identifiable).
+    Free: the law's parameters ((G0, V*, n) viscoelastic, (G0, V*) Eyring, or the named
+    parameters of a :class:`ParametricLaw`; positive ones as logarithms), and ``f_par1``,
+    ``f_perp1`` and ``K[0,1]`` as chosen; ``N``, ``K[0,0]``, ``K[1,1]`` are held (only
+    ``N f1``, ``N**2 K[0,0] G`` and ``K[0,1]/K[0,0]`` enter eqs 9-10). Solved by
+    Levenberg-Marquardt with QR-factorised steps (C++).
+
+    ``sigma = (sigma_par, sigma_perp)``: standard deviations of the two force components,
+    scalars or one per velocity. With ``absolute_sigma`` (default when sigma is given) they are
+    taken as known and the covariance is not rescaled; otherwise (and without sigma) it is
+    rescaled by the reduced chi**2. ``profile=True`` adds profile-likelihood intervals at
+    ``profile_level`` (always computed when the status is "not_identifiable").
 
     Parameters
     ----------
     V, F_par, F_perp : array_like
         Velocities and the two mean forces, same length, more data than parameters.
     guess : SlidingModel, optional
-        Starting model; its law (viscoelastic or Eyring) is the one fitted.
+        Starting model; its law (viscoelastic, Eyring or a ParametricLaw) is the one fitted.
     fit_f_par1, fit_f_perp1, fit_coupling : bool, optional
-        Free the force offsets (default True) and the coupling K[0][1] (default False).
+        Free the force offsets (default True) and the coupling K[0,1] (default False).
     max_iterations : int, optional
         Default 200.
+    sigma : tuple of (float or array_like), optional
+        ``(sigma_par, sigma_perp)``, scalars or one per velocity.
+    absolute_sigma : bool, optional
+        Take sigma as known (default True when sigma is given).
+    profile : bool, optional
+        Compute profile-likelihood intervals.
+    profile_level : float, optional
+        Coverage of the profile intervals (default one standard deviation, 0.6827).
+    max_condition : float, optional
+        Condition number above which a direction counts as undetermined.
 
     Returns
     -------
     SteadySlidingFit
-        The fitted model, parameter names, values, standard errors (s^2 (J^T J)^-1, delta method),
-        covariance, residual sum of squares, iterations and a status ("converged",
-        "max_iterations" or "singular").
+        Estimates, standard errors, covariance, rss, status and the reason it stopped.
 
     Raises
     ------
     ValueError
-        If the data are not finite, of different lengths or too few, or the law cannot be fitted.
+        If the data are not finite, of different lengths or too few, sigma is not positive, or
+        the law cannot be fitted.
 
     Examples
     --------
     >>> import numpy as np, gecko
     >>> V = np.logspace(-6, -2, 40)
     >>> r = gecko.steady_sliding(V, gecko.FIG6_VISCOELASTIC)
-    >>> guess = gecko.FIG6_VISCOELASTIC.replace(f_perp1=3e-7, law=gecko.ViscoelasticDetachment(1e-14, 3e-4, 0.7))
-    >>> fit = gecko.fit_steady_sliding(V, r.F_par, r.F_perp, guess, fit_f_par1=False)
-    >>> fit.status, fit.names
-    ('converged', ('G0', 'V_star', 'n', 'f_perp1'))
-    >>> np.allclose(fit.values, [3e-14, 1e-4, 0.45, 2e-7], rtol=1e-6)
-    True
+    >>> fit = gecko.fit_steady_sliding(V, r.F_par, r.F_perp, fit_f_par1=False)
+    >>> fit.status
+    'converged'
     """
+    from statistics import NormalDist
+
     shape, (v, fp, fq) = _flat_args((V, F_par, F_perp))
+    if not isinstance(guess, SlidingModel):
+        raise ValueError(f"guess = {guess!r} is not allowed: need a SlidingModel")
     law = guess.law
+    custom = {}
     if isinstance(law, ViscoelasticDetachment):
         kind, n = 0, float(law.n)
     elif isinstance(law, EyringDetachment):
         kind, n = 1, 1.0
+    elif isinstance(law, ParametricLaw):
+        kind, n = 2, 1.0
+        names = list(law.params)
+        if not names:
+            raise ValueError("guess.law.params must name at least one parameter")
+        positive = tuple(names) if law.positive is None else tuple(law.positive)
+        unknown = set(positive) - set(names)
+        if unknown:
+            raise ValueError(f"guess.law.positive names unknown parameters {sorted(unknown)}")
+        func = law.func
+
+        def G(Vv, pv, _names=names, _func=func):
+            return np.asarray(_func(Vv, **dict(zip(_names, map(float, pv)))), dtype=np.float64)
+
+        custom = dict(custom_G=G, custom_names=names,
+                      custom_values=[_scalar(law.params[k], f"guess.law.params[{k!r}]")
+                                     for k in names],
+                      custom_positive=[k in positive for k in names])
     else:
-        raise ValueError("guess.law must be a ViscoelasticDetachment or an EyringDetachment")
+        raise ValueError("guess.law must be a ViscoelasticDetachment, an EyringDetachment or a "
+                         "ParametricLaw (a callable with named parameters)")
+    if not (0 < profile_level < 1):
+        raise ValueError(f"profile_level = {profile_level!r} is out of range: need 0 < level < 1")
+    if not (max_condition > 1):
+        raise ValueError(f"max_condition = {max_condition!r} is out of range: need > 1")
+    if int(max_iterations) < 0:
+        raise ValueError(f"max_iterations = {max_iterations!r} is out of range: need >= 0")
+    delta = NormalDist().inv_cdf(0.5 + profile_level / 2) ** 2
+    sp = sq = None
+    if sigma is not None:
+        if not (isinstance(sigma, (tuple, list)) and len(sigma) == 2):
+            raise ValueError("sigma must be a pair (sigma_par, sigma_perp) of scalars or arrays")
+        sp = _sigma_array(sigma[0], v.size, "sigma_par")
+        sq = _sigma_array(sigma[1], v.size, "sigma_perp")
+    known = sigma is not None and (True if absolute_sigma is None else bool(absolute_sigma))
     r = _core.fit_steady_sliding(v, fp, fq, float(guess.N), _matrix(guess.K), float(guess.f_par1),
-                                 float(guess.f_perp1), kind, float(law.G0), float(law.V_star), n,
-                                 bool(fit_f_par1), bool(fit_f_perp1), bool(fit_coupling),
-                                 _check_count(max_iterations, "max_iterations"))
+                                 float(guess.f_perp1), kind,
+                                 float(getattr(law, "G0", 1.0)), float(getattr(law, "V_star", 1.0)),
+                                 n, bool(fit_f_par1), bool(fit_f_perp1), bool(fit_coupling),
+                                 _check_count(max_iterations, "max_iterations"), sp, sq, known,
+                                 bool(profile), float(delta),
+                                 float(max_condition), **custom)
     values = dict(zip(r["names"], r["values"]))
     if kind == 0:
         new_law = ViscoelasticDetachment(values["G0"], values["V_star"], values["n"])
-    else:
+    elif kind == 1:
         new_law = EyringDetachment(values["G0"], values["V_star"])
+    else:
+        new_law = law.replace(**{k: values[k] for k in law.params})
     K = np.asarray(r["K"])
     model = SlidingModel(N=guess.N, K=tuple(map(tuple, K.tolist())), f_par1=float(r["f_par1"]),
                          f_perp1=float(r["f_perp1"]), law=new_law)
     return SteadySlidingFit(model, tuple(r["names"]), np.asarray(r["values"]),
                             np.asarray(r["standard_errors"]), np.asarray(r["covariance"]),
-                            float(r["rss"]), int(r["iterations"]), str(r["status"]))
+                            float(r["rss"]), int(r["iterations"]), str(r["status"]),
+                            str(r["reason"]), float(r["chi2"]), int(r["dof"]),
+                            float(r["condition"]), tuple(r["undetermined"]),
+                            np.asarray(r["profile_lower"]), np.asarray(r["profile_upper"]), known)

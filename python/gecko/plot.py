@@ -593,3 +593,46 @@ def sensitivities(ax, Ft, dFn: dict, *, w: float = 1.0, **kw):
     ax.set_ylabel("sensitivity of the critical $F_n$")
     ax.grid(True, linewidth=0.4, alpha=0.5)
     return arts
+
+
+def contact_contours(ax, Fn, Ft, a, *, status=None, levels=9, l2_over_l1: Optional[float] = None,
+                     filled: bool = True, color=None, label: Optional[str] = None, colorbar=None, **kw):
+    """Contours of the non-contact length a (in units of l1) over a grid of loads: ``Fn``, ``Ft``,
+    ``a`` 2-D arrays of one shape (rows: Ft; ``TwoLevelSeta.contact_state`` on a mesh), NaN where
+    there is no single equilibrium on the spatula. ``levels``: a number of levels between l1 and
+    l1 + l2, or the a/l1 values. ``filled``: shade between the levels (one design), else lines
+    only in ``color`` (several designs). With ``status``, loads with several equilibria are
+    hatched. ``colorbar``: a figure to draw the colour bar on. Returns the contour set."""
+    a = np.asarray(a, dtype=np.float64)
+    finite = a[np.isfinite(a)]
+    if isinstance(levels, (int, np.integer)):
+        if l2_over_l1 is not None:
+            lo, hi = 1.0, 1.0 + float(l2_over_l1)
+        elif finite.size:
+            lo, hi = float(finite.min()), float(finite.max())
+        else:
+            lo, hi = 1.0, 2.0
+        levels = np.linspace(lo, hi, int(levels) + 2)[1:-1] if hi > lo else [lo]
+    levels = np.asarray(levels, dtype=np.float64)
+    cs = None
+    if finite.size:
+        if filled:
+            bounds = np.concatenate([[min(levels[0], finite.min())], levels, [max(levels[-1], finite.max())]])
+            bounds = np.unique(bounds)
+            if bounds.size >= 2:
+                cf = ax.contourf(Fn, Ft, a, levels=bounds, cmap=kw.pop("cmap", "viridis"), alpha=0.85)
+                if colorbar is not None:
+                    colorbar.colorbar(cf, ax=ax, label=r"non-contact length $a/l_1$")
+            cs = ax.contour(Fn, Ft, a, levels=levels, colors="k", linewidths=0.6, **kw)
+        else:
+            cs = ax.contour(Fn, Ft, a, levels=levels, colors=color, linewidths=1.0, **kw)
+        if cs is not None and len(cs.levels):
+            ax.clabel(cs, fmt="%.3g", fontsize="x-small")
+    if status is not None:
+        several = (np.asarray(status) == 6).astype(float)
+        if several.any():
+            ax.contourf(Fn, Ft, several, levels=[0.5, 1.5], colors="none", hatches=["///"])
+    if label:
+        ax.plot([], [], color=color or "k", label=label)
+    ax.grid(True, linewidth=0.4, alpha=0.5)
+    return cs

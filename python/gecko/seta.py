@@ -21,6 +21,7 @@ Bad input raises ``ValueError`` naming the parameter and its allowed range (or, 
 """
 from __future__ import annotations
 
+import enum
 import math
 from dataclasses import dataclass, field
 from typing import Optional
@@ -28,14 +29,14 @@ from typing import Optional
 import numpy as np
 
 from . import _core
-from ._vectorize import error_code as _error_code, vectorised as _vectorised
+from ._vectorize import error_code as _error_code, vectorised as _vectorised, with_index as _with_index
 from ._vectorize import check_count as _check_count, check_tolerance as _check_tolerance
 from ._vectorize import real_array as _real_array
 
 __all__ = [
     "TwoLevelSeta", "SingleFiber", "CriticalLine", "SetaCharacteristics", "kendall_fn", "rivlin_fn",
     "critical_line_batch", "STATUS", "DESIGN_FIELDS", "SetaDesign", "CriticalStatus", "LineEnd",
-    "MinimumStatus",
+    "MinimumStatus", "ContactState", "ContactStatus",
 ]
 
 # The domain comes from C++ (src/bindings/seta_types.cpp): the design type with its fields, defaults
@@ -214,6 +215,65 @@ class SetaCharacteristics:
     min_status_code: Optional[MinimumStatus] = None  # ``min_status`` as a MinimumStatus member
 
 
+class ContactStatus(enum.IntEnum):
+    """Status of a contact state (``TwoLevelSeta.contact_state``); the numbers shared with the
+    critical line's ``STATUS`` mean the same."""
+
+    CONVERGED = 0           #: one equilibrium, its contact edge on the spatula (l1 < a <= l1 + l2)
+    NOT_CONVERGED = 1       #: a root could not be refined, or the scan could not decide
+    NO_CONTACT = 2          #: below the critical line: no side contact at this load
+    UNSUPPORTED_STATE = 3   #: outside the model's forms (axial load comparable to EA; l2 longer than
+                            #: one period of the spatula's orbit)
+    BEYOND_JOINT = 4        #: the contact edge would pass the joint onto the beam (outside the model)
+    INVALID_INPUT = 5       #: bad input under ``errors="nan"``
+    SEVERAL_EQUILIBRIA = 6  #: more than one equilibrium (count in ``equilibria``; all of them with
+                            #: ``all_equilibria=True``)
+    INADMISSIBLE = 7        #: reserved: the equilibrium crosses the substrate
+
+
+@dataclass
+class ContactState:
+    """The forward problem's result (``TwoLevelSeta.contact_state``), arrays in the broadcast shape
+    of (Fn, Ft); NaN (or -1 for counts) where ``status != 0``.
+
+    ``a``: non-contact length in the convected coordinate, l1 < a <= l1 + l2; ``contact_length`` =
+    l1 + l2 - a; ``theta_joint`` = theta2(l1); ``theta_rate_joint`` = theta2'(l1), ``theta_rate_base``
+    = theta1'(0); ``turning_points`` (beam + spatula, also separately); ``max_axial_strain`` = max
+    |T|/EA over the free length; ``energy_release_rate``: the left side of eq (3) at the edge (= w at
+    every equilibrium, a check); ``equilibria``: how many equilibria the load has on the spatula;
+    ``status``: ``ContactStatus`` values.
+
+    With ``all_equilibria=True`` every per-state field has one more trailing axis, one entry per
+    equilibrium (padded with NaN / -1), and ``state_status`` gives each entry's status (-1: padding);
+    ``status`` and ``equilibria`` keep the load's shape."""
+
+    Fn: np.ndarray
+    Ft: np.ndarray
+    a: np.ndarray
+    contact_length: np.ndarray
+    theta_joint: np.ndarray
+    theta_rate_joint: np.ndarray
+    theta_rate_base: np.ndarray
+    turning_points: np.ndarray
+    turning_points_beam: np.ndarray
+    turning_points_spatula: np.ndarray
+    max_axial_strain: np.ndarray
+    energy_release_rate: np.ndarray
+    equilibria: np.ndarray
+    status: np.ndarray
+    state_status: Optional[np.ndarray] = None
+
+    def status_names(self) -> np.ndarray:
+        """``status`` as names (e.g. "NO_CONTACT")."""
+        names = np.array([m.name for m in ContactStatus], dtype=object)
+        return names[np.asarray(self.status)]
+
+
+_CONTACT_FLOAT = ("a", "contact_length", "theta_joint", "theta_rate_joint", "theta_rate_base",
+                  "max_axial_strain", "energy_release_rate")
+_CONTACT_INT = ("turning_points", "turning_points_beam", "turning_points_spatula")
+
+
 class TwoLevelSeta:
     """A two-level seta design; the defaults are the paper's reference scene.
 
@@ -343,6 +403,70 @@ class TwoLevelSeta:
                             theta_rate_base=shaped(d["theta_rate_base"]),
                             turning_points_beam=shaped(d["turning_points_beam"]),
                             turning_points_spatula=shaped(d["turning_points_spatula"]))
+
+    def contact_state(self, Fn, Ft, *, all_equilibria: bool = False, errors: str = "raise",
+                      scan_points: Optional[int] = None, threads: int = 0) -> ContactState:
+        """The forward problem (paper 001 after eq 15): the contact state at the load (Fn, Ft).
+
+        ``Fn`` and ``Ft`` broadcast like numpy arrays. For each load the joint angle theta2(l1) is
+        solved from the beam's length equation along the spatula's orbit through the contact edge
+        (every root bracketed by a scan and refined to full precision), then a from the spatula's.
+        Status 0 only where exactly one equilibrium has its contact edge on the spatula; loads below
+        the critical line (no side contact), loads that would push the edge onto the beam, and loads
+        with several equilibria get their own ``ContactStatus``. ``all_equilibria=True`` returns every
+        equilibrium (see ``ContactState``). ``scan_points``: scan nodes per monotone piece of the
+        orbit (default 8). ``threads``: 0 automatic.
+
+        Bad input (NaN or infinite loads, Ft > (Ft)max = sqrt(2 EA2 w), shapes that do not
+        broadcast) raises ``ValueError`` naming the argument and its index; with ``errors="nan"`` such
+        elements get status ``INVALID_INPUT`` instead. Ft < -(Ft)max is valid input: no edge can be
+        in equilibrium there (status ``NO_CONTACT``).
+        """
+        code = _error_code(errors)
+        try:
+            fn_b, ft_b = np.broadcast_arrays(np.asarray(Fn, dtype=np.float64), np.asarray(Ft, dtype=np.float64))
+        except ValueError:
+            raise ValueError(f"contact_state: Fn and Ft do not broadcast (shapes {np.shape(Fn)} and "
+                             f"{np.shape(Ft)})") from None
+        shape = fn_b.shape
+        fn = np.ascontiguousarray(fn_b).reshape(-1)
+        ft = np.ascontiguousarray(ft_b).reshape(-1)
+        sp = 0 if scan_points is None else int(scan_points)
+        if scan_points is not None and not 3 <= sp <= 64:
+            raise ValueError(f"scan_points = {scan_points!r} is not allowed: need 3 <= scan_points <= 64")
+        if int(threads) < 0:
+            raise ValueError(f"threads = {threads!r} is not allowed: need threads >= 0 (0: automatic)")
+        try:
+            d = _core.seta_contact_state(self._params(), fn, ft, code, bool(all_equilibria), sp, int(threads))
+        except ValueError as e:
+            raise _with_index(e, shape) from None
+        if not all_equilibria:
+            fields = {k: d[k].reshape(shape) for k in _CONTACT_FLOAT + _CONTACT_INT + ("equilibria",)}
+            return ContactState(Fn=fn.reshape(shape), Ft=ft.reshape(shape), status=d["status"].reshape(shape),
+                                **fields)
+        n = fn.size
+        summary = d["summary_status"]
+        element = d["element"]
+        counts = np.bincount(element, minlength=n) if element.size else np.zeros(n, dtype=np.int64)
+        k = max(int(counts.max()) if n else 0, 1)
+        slot = np.zeros(element.size, dtype=np.int64)
+        if element.size:
+            starts = np.concatenate([[0], np.cumsum(counts)[:-1]])
+            slot = np.arange(element.size) - starts[element]
+        fields = {}
+        for name in _CONTACT_FLOAT:
+            out = np.full((n, k), np.nan)
+            out[element, slot] = d[name]
+            fields[name] = out.reshape(shape + (k,))
+        for name in _CONTACT_INT:
+            out = np.full((n, k), -1, dtype=np.int32)
+            out[element, slot] = d[name]
+            fields[name] = out.reshape(shape + (k,))
+        st = np.full((n, k), -1, dtype=np.int32)
+        st[element, slot] = d["status"]
+        return ContactState(Fn=fn.reshape(shape), Ft=ft.reshape(shape), status=summary.reshape(shape),
+                            equilibria=counts.astype(np.int32).reshape(shape), state_status=st.reshape(shape + (k,)),
+                            **fields)
 
     def solve(self, Ft: float, guess=None, *, tolerance: Optional[float] = None, max_iterations: int = 40) -> dict:
         """One critical state at ``Ft``.

@@ -54,3 +54,30 @@ def test_docstring_examples(name, needs, tmp_path, monkeypatch):
         runner.run(t)
     result = runner.summarize(verbose=False)
     assert result.failed == 0, f"{result.failed} of {result.attempted} examples failed in {name}"
+
+
+def test_every_public_function_and_class_has_an_example():
+    """The API reference promises Parameters/Attributes and Examples for every public name defined
+    in Python (names bound from C++, such as the status enums, document themselves there)."""
+    import inspect
+
+    import gecko
+    missing = []
+    for name in gecko.__all__:
+        obj = getattr(gecko, name)
+        if not (inspect.isfunction(obj) or inspect.isclass(obj)):
+            continue                                   # constants
+        if not getattr(obj, "__module__", "").startswith("gecko.") or obj.__module__ == "gecko._core":
+            continue
+        if isinstance(obj, type) and issubclass(obj, __import__("enum").Enum):
+            continue                                   # enums list their members
+        doc = inspect.getdoc(obj) or ""
+        takes_args = inspect.isfunction(obj) and bool(inspect.signature(obj).parameters)
+        wanted = ["Examples", "Parameters" if takes_args else None,
+                  "Returns" if inspect.isfunction(obj) else None]
+        lacking = [s for s in wanted if s and s not in doc]
+        if inspect.isclass(obj) and "Parameters" not in doc and "Attributes" not in doc:
+            lacking.append("Parameters or Attributes")
+        if lacking:
+            missing.append(f"{name}: {', '.join(lacking)}")
+    assert missing == []

@@ -97,7 +97,7 @@ def test_iteration_counts_out_of_range_are_refused(n):
                                       ({"maxiter": 0}, "maxiter")])
 def test_optimiser_options_out_of_range_are_refused(kw, name):
     pytest.importorskip("scipy")
-    from gecko.design_optimize import optimize_seta
+    from gecko.optimize import optimize_seta
     with pytest.raises(ValueError, match=rf"{name} = "):
         optimize_seta("max_pull_off", {"alpha2": (0.1, 0.5)}, starts=1, **kw)
 

@@ -44,6 +44,7 @@ def test_require_names_the_extra_of_each_optional_package(monkeypatch, module, e
 
 def test_a_submodule_names_the_top_level_package(monkeypatch):
     monkeypatch.setitem(sys.modules, "pyarrow", None)
+    monkeypatch.setitem(sys.modules, "pyarrow.parquet", None)   # in case an earlier test imported it
     with pytest.raises(ImportError, match=r"'pyarrow'.*" + hint("sweep")):
         _optional.require("pyarrow.parquet", "Parquet files")
 

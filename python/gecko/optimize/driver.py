@@ -39,19 +39,53 @@ class StartOutcome(str, enum.Enum):
 
 @dataclass
 class SetaOptimum:
-    """Result of ``optimize_seta``.
+    """Result of :func:`gecko.optimize_seta`.
 
-    design: all nine parameters of the optimum; seta: it as a ``TwoLevelSeta``; value: the objective
-    there (maximised); variables: the varied variables at the optimum (by name, derived ones
-    included); gradient: d value / d variable there; line: its traced critical line;
-    active_constraints: names of the constraints
-    and bounds active at the optimum; constraints: every constraint's value g (>= 0 feasible);
-    evaluations: critical-line evaluations in all starts; starts: per-start outcome dicts; status:
-    "optimal" | "infeasible" | "failed" | "not_converged"; message: why; kkt: first-order check at
-    the optimum in the scaled variables: grad f = sum lambda_i grad g_i over the active constraints
-    and bounds with lambda >= 0 (NNLS), its residual, the residual relative to
-    max(|grad f|, 1 + |value|) (above 1e-4 the status is "not_converged"), and the multipliers;
-    failures: designs where the solver failed (penalised, never used as numbers)."""
+    Attributes
+    ----------
+    objective : str
+        The objective's name.
+    design : dict
+        All nine parameters of the optimum.
+    seta : TwoLevelSeta or None
+        The optimum as a design object.
+    value : float
+        The objective there (maximised).
+    line : CriticalLine or None
+        Its traced critical line.
+    active_constraints : list of str
+        The constraints and bounds active at the optimum.
+    constraints : dict
+        Every constraint's value g (>= 0: feasible).
+    evaluations : int
+        Critical-line evaluations in all starts.
+    starts : list of dict
+        The outcome of each start.
+    status : str
+        "optimal", "infeasible", "failed" or "not_converged".
+    message : str
+        Why.
+    variables : dict
+        The varied variables at the optimum, by name (derived ones included).
+    gradient : dict
+        d value / d variable there.
+    kkt : dict
+        First-order check in the scaled variables: grad f = sum lambda_i grad g_i over the active
+        constraints and bounds with lambda >= 0 (NNLS), its residual, the residual relative to
+        max(norm of grad f, 1 + abs(value)) (above 1e-4 the status is "not_converged"), and the
+        multipliers.
+    failures : list
+        Designs where the solver failed (penalised, never used as numbers).
+    wall_time : float
+        Seconds.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> best = gecko.optimize_seta("max_pull_off", {"alpha2": (0.05, 1.0)}, ["not_sticky"], starts=2)
+    >>> best.status, sorted(best.variables), best.kkt["relative_residual"] < 1e-4
+    ('optimal', ['alpha2'], True)
+    """
 
     objective: str
     design: dict

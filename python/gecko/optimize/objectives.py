@@ -22,9 +22,26 @@ class _EvaluationFailure(Exception):
 
 @dataclass
 class Objective:
-    """A user objective to maximise: ``fun(design: dict) -> float``, ``jac`` as for
-    ``Constraint`` (without it: central differences of ``fun`` in the scaled variables). A
-    non-finite value raises ``ValueError`` naming the objective and the design."""
+    """A user objective to maximise with :func:`gecko.optimize_seta`.
+
+    Parameters
+    ----------
+    name : str
+        Shown in the result.
+    fun : callable
+        ``fun(design: dict) -> float``; a non-finite value raises ``ValueError`` naming the
+        objective and the design.
+    jac : callable, optional
+        As for :class:`Constraint`; without it, central differences of ``fun`` in the scaled
+        variables.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> stiff = gecko.Objective("-EI1", lambda d: -d["EI1"], jac=lambda d: {"EI1": -1.0})
+    >>> stiff.fun({"EI1": 5.0})
+    -5.0
+    """
 
     name: str
     fun: Callable[[dict], float]
@@ -244,9 +261,41 @@ _OBJECTIVE_FUNCS = {"max_pull_off": _max_pull_off, "area": _area, "pull_off_at":
 
 def seta_objective(objective: str, seta: TwoLevelSeta, *, ft: Optional[float] = None,
                    nodes: int = 48):
-    """Value and exact gradient of a built-in objective at one design: ``(value, grad)`` with
-    ``grad`` a dict by parameter name (the nine fields). Raises ``RuntimeError`` where the solver
-    cannot give a trustworthy value (the optimiser records those designs as failures)."""
+    """Value and exact gradient of a built-in objective at one design.
+
+    Parameters
+    ----------
+    objective : {"max_pull_off", "area", "pull_off_at"}
+        The objective (``OBJECTIVES``).
+    seta : TwoLevelSeta
+        The design.
+    ft : float, optional
+        The shear force of "pull_off_at" (required there).
+    nodes : int, optional
+        Gauss nodes of "area" (default 48).
+
+    Returns
+    -------
+    value : float
+        The objective at the design.
+    grad : dict
+        Its derivative with respect to each of the nine design fields, by name.
+
+    Raises
+    ------
+    ValueError
+        If the objective is not one of ``OBJECTIVES``.
+    RuntimeError
+        Where the solver cannot give a trustworthy value (the optimiser records those designs as
+        failures).
+
+    Examples
+    --------
+    >>> import gecko
+    >>> value, grad = gecko.seta_objective("max_pull_off", gecko.TwoLevelSeta())
+    >>> round(value, 4), round(grad["alpha2"], 4)
+    (2.8024, 15.0693)
+    """
     if objective not in _OBJECTIVE_FUNCS:
         raise ValueError(f"objective = {objective!r} is not allowed: need one of {OBJECTIVES}")
     try:

@@ -15,11 +15,27 @@ from .space import _ANGLE_MARGIN, _HALF_PI, _Space
 
 @dataclass
 class Constraint:
-    """A user constraint g(design) >= 0. ``fun(design: dict) -> float``; ``jac(design) ->`` dict of
-    partial derivatives by parameter name (the nine fields; missing names count as 0) or a length-9
-    array in ``TwoLevelSeta._FIELDS`` order. Without ``jac`` the gradient is a central difference of
-    ``fun`` in the scaled variables (step 1e-6): exact gradients are used for everything gecko
-    computes, a user function is the user's."""
+    """A user constraint g(design) >= 0 for :func:`gecko.optimize_seta`.
+
+    Parameters
+    ----------
+    name : str
+        Shown in ``SetaOptimum.active_constraints`` and in messages.
+    fun : callable
+        ``fun(design: dict) -> float``, with the nine design fields by name.
+    jac : callable, optional
+        ``jac(design) ->`` dict of partial derivatives by parameter name (missing names count as 0)
+        or a length-9 array in the order of the design fields. Without it the gradient is a central
+        difference of ``fun`` in the scaled variables (step 1e-6): exact gradients are used for
+        everything gecko computes, a user function is the user's.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> short = gecko.Constraint("l2 <= 0.15", lambda d: 0.15 - d["l2"], jac=lambda d: {"l2": -1.0})
+    >>> short.fun({"l2": 0.1}) > 0
+    True
+    """
 
     name: str
     fun: Callable[[dict], float]

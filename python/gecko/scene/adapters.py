@@ -144,6 +144,10 @@ class TwoLevelSetaAdapter(Adapter):
             steps.append(Step(st.name, "shapes", pts,
                               f"critical states at the requested Ft, then RK4 of the elastica in C++ "
                               f"({o['points'] - 1} steps per segment)"))
+        if "contact_contours" in out:
+            steps.append(Step(st.name, "contact_contours", pts,
+                              "the forward problem (contact length a) on the Fn x Ft grid, one C++ call per "
+                              f"design ({kk} kernel)"))
         if "sensitivities" in out:
             steps.append(Step(st.name, "sensitivities", pts,
                               "dFn/d(design) by the implicit function theorem (dual numbers in C++)"))
@@ -256,6 +260,22 @@ class TwoLevelSetaAdapter(Adapter):
                         "status": np.asarray(r["status"])}
             d = ex.cached(("sens", _design(p), _key(g)), fn)
             ex.data[st.name][i]["sensitivities"] = {"Ft": d["Ft"], "dFn": {k: d["dFn"][k] for k in opts["wrt"]}}
+            ex.progress.advance(1, st.name)
+
+    def k_contact_contours(self, ex, st, step: Step) -> None:
+        opts = st.outputs["contact_contours"].options
+        res = ex.scene.resolution
+        for i in step.points:
+            p = st.points[i]
+            key = f"{st.key}.outputs.contact_contours"
+            gn = eval_grid(opts["Fn"], st.env(p), f"{key}.Fn", res)
+            gt = eval_grid(opts["Ft"], st.env(p), f"{key}.Ft", res)
+
+            def fn():
+                # rows: Ft, columns: Fn (one row of the contour is one Ft)
+                r = _seta(p.values).contact_state(gn[None, :], gt[:, None], errors="nan", threads=ex.threads)
+                return {"Fn": gn, "Ft": gt, "a": r.a, "status": r.status, "equilibria": r.equilibria}
+            ex.data[st.name][i]["contact_contours"] = ex.cached(("contact", _design(p), _key(gn), _key(gt)), fn)
             ex.progress.advance(1, st.name)
 
 

@@ -128,6 +128,10 @@ CHARACTERISTIC_LABELS = {
 
 DEFAULT_K = ((5.0, -3.0), (-3.0, 2.0))
 
+#: default load grid of the contact_contours output (Fn x Ft)
+CONTACT_GRID_FN = {"range": [-4.0, 2.0], "num": 121}
+CONTACT_GRID_FT = {"range": [0.0, "0.99*ft_end"], "num": 100}
+
 MODELS: Dict[str, Model] = {}
 
 
@@ -137,7 +141,7 @@ def _add(m: Model) -> None:
 
 _add(Model(
     "two_level_seta", "two-level seta", SETA_PARAMS,
-    ("critical_line", "characteristics", "shapes", "sensitivities", "linear_line", "csv"),
+    ("critical_line", "characteristics", "shapes", "sensitivities", "linear_line", "contact_contours", "csv"),
     "Two-level seta of directional adhesion (docs/theory/two_level_seta.md); defaults: the paper's reference scene.",
     characteristics=SETA_EXACT + SETA_SMALL))
 _add(Model(
@@ -284,6 +288,24 @@ def parse_output(model: Model, name: str, value, key: str) -> Optional[OutputSpe
         check_grid(ft, f"{key}.Ft")
         pts = _int_in(table.get("points", 101), f"{key}.points", 3, 100000)
         return OutputSpec(name, {"grid": ft, "points": pts, "grid_key": "Ft"})
+    if name == "contact_contours":
+        # The forward problem on a grid of loads: a (non-contact length) at every (Fn, Ft).
+        table = _bool_or_table(value, key, ["Fn", "Ft", "levels"])
+        if table is None:
+            return None
+        fn = table.get("Fn", CONTACT_GRID_FN)
+        ft = table.get("Ft", CONTACT_GRID_FT)
+        check_grid(fn, f"{key}.Fn")
+        check_grid(ft, f"{key}.Ft")
+        levels = table.get("levels", 9)
+        if isinstance(levels, list):
+            if not levels or not all(isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
+                                     for v in levels):
+                raise SceneError("need a list of finite numbers (values of a/l1) or an integer", key=f"{key}.levels")
+            levels = sorted(float(v) for v in levels)
+        else:
+            levels = _int_in(levels, f"{key}.levels", 1, 50)
+        return OutputSpec(name, {"Fn": fn, "Ft": ft, "levels": levels})
     if name == "force_trace":
         table = _bool_or_table(value, key, ["samples_per_segment"])
         if table is None:

@@ -77,6 +77,17 @@ def render_plot(scene, plot, curves, folder: Path, formats: Sequence[str]) -> Li
     elif kind == "force_space":
         for c in curves:
             gp.force_space(ax, c.x, c.y, arrows=opts.get("arrows", True), label=c.label, linewidth=1.6)
+    elif kind == "contact_contours":
+        many = len(curves) > 1
+        for i, c in enumerate(curves):
+            shape = c.meta["shape"]
+            gp.contact_contours(ax, c.x.reshape(shape), c.y.reshape(shape), c.meta["columns"]["a_over_l1"].reshape(shape),
+                                status=c.meta["columns"]["status"].reshape(shape), levels=c.meta["levels"],
+                                l2_over_l1=c.meta["l2"] / c.meta["l1"], filled=not many,
+                                color=f"C{i}" if many else None, label=c.label or None,
+                                colorbar=None if many else fig)
+        ax.set_xlabel(gp.FN_LABEL)
+        ax.set_ylabel(gp.FT_LABEL)
     elif kind == "steady_sliding":
         labels = {}
         for c in curves:

@@ -238,6 +238,17 @@ def plot_curves(scene: Scene, plot, data) -> List[Curve]:
                 else:
                     curves.append(Curve(st.name, base or st.model.title, tr.f_par, tr.f_perp, "F_par", "F_perp",
                                         "force_space", meta={"t": tr.t}))
+        elif plot.kind == "contact_contours":
+            for p in st.points:
+                c = rows[p.index]["contact_contours"]
+                w, l1 = w_of(p), float(p.values["l1"])
+                FN, FT = np.meshgrid(np.asarray(c["Fn"]) / w, np.asarray(c["Ft"]) / w)
+                a = np.asarray(c["a"]) / l1
+                curves.append(Curve(st.name, st.label_for(p, many) if (st.swept_names or st.label) else "",
+                                    FN.ravel(), FT.ravel(), "Fn_bar", "Ft_bar", "contact_contours",
+                                    meta={"columns": {"a_over_l1": a.ravel(), "status": np.asarray(c["status"]).ravel()},
+                                          "shape": a.shape, "levels": st.outputs["contact_contours"].options["levels"],
+                                          "l1": l1, "l2": float(p.values["l2"]), "values": p.values}))
         elif plot.kind == "steady_sliding":
             for p in st.points:
                 f = rows[p.index]["forces"]
@@ -254,12 +265,18 @@ def curves_csv(curves: Sequence[Curve]) -> str:
     xname = curves[0].xname if curves else "x"
     yname = curves[0].yname if curves else "y"
     same = all(c.xname == xname and c.yname == yname for c in curves)
-    head = ["study", "curve", "label", "panel"] + ([xname, yname] if same else ["x_name", "x", "y_name", "y"])
+    # values on the points beyond x and y (a contour's a and status), when every curve has them
+    extra = list(curves[0].meta.get("columns", {})) if curves else []
+    if not all(list(c.meta.get("columns", {})) == extra for c in curves):
+        extra = []
+    head = ["study", "curve", "label", "panel"] + ([xname, yname] if same else ["x_name", "x", "y_name", "y"]) + extra
     wr.writerow(head)
     for i, c in enumerate(curves):
-        for xv, yv in zip(np.asarray(c.x).ravel(), np.asarray(c.y).ravel()):
+        cols = [np.asarray(c.meta["columns"][k]).ravel() for k in extra]
+        for j, (xv, yv) in enumerate(zip(np.asarray(c.x).ravel(), np.asarray(c.y).ravel())):
             row = [c.study, i, c.label, c.panel]
             row += [repr(float(xv)), repr(float(yv))] if same else [c.xname, repr(float(xv)), c.yname, repr(float(yv))]
+            row += [repr(col[j].item()) for col in cols]
             wr.writerow(row)
     return buf.getvalue()
 
@@ -289,6 +306,19 @@ def study_csv(study: Study, rows: List[Dict[str, Any]]) -> Dict[str, str]:
                     for vals in zip(*(np.asarray(d[c]) for c in cols)):
                         wr.writerow([p.index] + [p.swept[n] for n in swept] + [repr(v.item()) for v in vals])
             out[f"{study.name}.{output}.csv"] = buf.getvalue()
+    if any("contact_contours" in r for r in rows):
+        buf = io.StringIO()
+        wr = csv.writer(buf, lineterminator="\n")
+        wr.writerow(["design"] + swept + ["Fn", "Ft", "a", "status", "equilibria"])
+        for p, r in zip(study.points, rows):
+            if "contact_contours" in r:
+                c = r["contact_contours"]
+                for jt, ft in enumerate(c["Ft"]):
+                    for jn, fn in enumerate(c["Fn"]):
+                        wr.writerow([p.index] + [p.swept[n] for n in swept] +
+                                    [repr(float(fn)), repr(float(ft)), repr(float(c["a"][jt, jn])),
+                                     int(c["status"][jt, jn]), int(c["equilibria"][jt, jn])])
+        out[f"{study.name}.contact_contours.csv"] = buf.getvalue()
     if any("force_trace" in r for r in rows):
         buf = io.StringIO()
         wr = csv.writer(buf, lineterminator="\n")

@@ -53,6 +53,7 @@ PLOT_KINDS = {
     "force_trace": ("force_trace",),
     "force_space": ("force_trace",),
     "steady_sliding": ("forces",),
+    "contact_contours": ("contact_contours",),
 }
 FORMATS = ("png", "svg", "pdf")
 
@@ -399,6 +400,16 @@ def _parse_study(s, key: str, res: float) -> Study:
                                      f"most {MAX_STUDY_EVALUATIONS} evaluations per output (use a [sweep] "
                                      "section for larger runs)", key=gkey)
                 _check_grid_values(study, spec.name, g, p, gkey)
+    if "contact_contours" in outputs:  # two grids (Fn, Ft): evaluated here for the same reasons
+        spec = outputs["contact_contours"]
+        for p in points:
+            gn = eval_grid(spec.options["Fn"], study.env(p), f"{key}.outputs.contact_contours.Fn", res)
+            gt = eval_grid(spec.options["Ft"], study.env(p), f"{key}.outputs.contact_contours.Ft", res)
+            if len(points) * gn.size * gt.size > MAX_STUDY_EVALUATIONS:
+                raise SceneError(f"{len(points)} designs x {gn.size} x {gt.size} loads is out of range: need at most "
+                                 f"{MAX_STUDY_EVALUATIONS} evaluations per output", key=f"{key}.outputs.contact_contours")
+            _check_grid_values(study, "contact_contours", gn, p, f"{key}.outputs.contact_contours.Fn")
+            _check_grid_values(study, "contact_contours_ft", gt, p, f"{key}.outputs.contact_contours.Ft")
     return study
 
 
@@ -408,7 +419,7 @@ def _check_grid_values(study: Study, output: str, g: np.ndarray, p: Point, key: 
     if output == "forces" and np.any(g < 0):
         raise SceneError(f"velocity {g.min():g} is out of range: need V >= 0", key=key)
     env = study.env(p)
-    if output in ("critical_line", "shapes", "sensitivities") and "ft_max" in env:
+    if output in ("critical_line", "shapes", "sensitivities", "contact_contours_ft") and "ft_max" in env:
         bad = g[np.abs(g) > env["ft_max"] * (1 + 1e-12)]
         if bad.size:
             raise SceneError(f"Ft = {bad[0]:g} is out of range: need |Ft| <= (Ft)max = sqrt(2 EA w) = "
