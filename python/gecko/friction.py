@@ -869,6 +869,11 @@ class SteadySlidingFit(NamedTuple):
     profile_upper: Optional[np.ndarray] = None
     sigma_known: bool = False
 
+    @property
+    def status_code(self) -> "FitStatus":
+        """``status`` as a :class:`FitStatus` member (code compares these, not the text)."""
+        return FitStatus[self.status]
+
 
 def _sigma_array(s, n, name):
     a = _real_array(s, name)
@@ -882,11 +887,6 @@ def _sigma_array(s, n, name):
         raise ValueError(f"gecko.fit_steady_sliding: {name}[{i}] = {float(a[i])!r} is out of range: need "
                          "0 < sigma < inf")
     return a
-
-    @property
-    def status_code(self) -> "FitStatus":
-        """``status`` as a :class:`FitStatus` member (code compares these, not the text)."""
-        return FitStatus[self.status]
 
 
 def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC, *,
