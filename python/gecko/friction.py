@@ -892,7 +892,7 @@ class SteadySlidingFit(NamedTuple):
 
 
 def _sigma_array(s, n, name):
-    a = np.asarray(s, dtype=np.float64)
+    a = _real_array(s, name)
     if a.ndim > 1 or (a.ndim == 1 and a.size != n):
         raise ValueError(f"{name} must be a scalar or have one entry per velocity ({n}), got shape "
                          f"{a.shape}")
@@ -1002,6 +1002,7 @@ def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC
         raise ValueError(f"profile_level = {profile_level!r} is out of range: need 0 < level < 1")
     if not (max_condition > 1):
         raise ValueError(f"max_condition = {max_condition!r} is out of range: need > 1")
+    max_iterations = _check_count(max_iterations, "max_iterations")  # an integer >= 1, not 2.5 or 0
     delta = NormalDist().inv_cdf(0.5 + profile_level / 2) ** 2
     sp = sq = None
     if sigma is not None:
@@ -1014,7 +1015,7 @@ def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC
                                  float(guess.f_perp1), kind,
                                  float(getattr(law, "G0", 1.0)), float(getattr(law, "V_star", 1.0)),
                                  n, bool(fit_f_par1), bool(fit_f_perp1), bool(fit_coupling),
-                                 _check_count(max_iterations, "max_iterations"), sp, sq, known,
+                                 max_iterations, sp, sq, known,
                                  bool(profile), float(delta),
                                  float(max_condition), **custom)
     values = dict(zip(r["names"], r["values"]))

@@ -475,8 +475,9 @@ class TwoLevelSeta:
         (1.078441, True)
         """
         code = _error_code(errors)
+        fn_a, ft_a = _real_array(Fn, "Fn"), _real_array(Ft, "Ft")
         try:
-            fn_b, ft_b = np.broadcast_arrays(np.asarray(Fn, dtype=np.float64), np.asarray(Ft, dtype=np.float64))
+            fn_b, ft_b = np.broadcast_arrays(fn_a, ft_a)
         except ValueError:
             raise ValueError(f"contact_state: Fn and Ft do not broadcast (shapes {np.shape(Fn)} and "
                              f"{np.shape(Ft)})") from None
@@ -695,7 +696,7 @@ class TwoLevelSeta:
         -1.0686
         """
         d = self.small_deformation()
-        out = d["fn0"] + d["slope_k"] * np.asarray(Ft, dtype=np.float64)
+        out = d["fn0"] + d["slope_k"] * _real_array(Ft, "Ft")
         return float(out) if np.ndim(out) == 0 else out
 
 
