@@ -118,11 +118,13 @@ TEST_CASE("carlson_rf: precision policy trades error for fewer steps, error stay
 // Regression (seta stress campaign): the unchecked kernels are called from hot loops without
 // argument checks; two zero arguments used to keep the duplication test true forever. They must
 // now stop (bounded by detail::carlson_max_steps) and answer with a non-finite value.
-TEST_CASE("carlson unchecked kernels terminate on two zero arguments", "[carlson_rf][regression]") {
+TEMPLATE_TEST_CASE("carlson unchecked kernels terminate on two zero arguments", "[carlson_rf][regression]",
+                   float, double, long double) {
+  using T = TestType;
   using gecko::policies::default_policy;
-  CHECK_FALSE(std::isfinite(gecko::detail::carlson_rf_imp<double, default_policy>(0.0, 0.2, 0.0)));
-  CHECK_FALSE(std::isfinite(gecko::detail::carlson_rf_roots_imp<double, default_policy>(0.0, 0.2, 0.0, 0.0, std::sqrt(0.2), 0.0)));
-  CHECK_FALSE(std::isfinite(gecko::detail::carlson_rd_imp<double, default_policy>(0.0, 0.0, 0.2)));
-  CHECK_FALSE(std::isfinite(gecko::detail::carlson_rf_imp<float, default_policy>(0.0f, 0.2f, 0.0f)));
-  CHECK_FALSE(std::isfinite(gecko::detail::carlson_rf_imp<long double, default_policy>(0.0L, 0.2L, 0.0L)));
+  const T zero = 0, a = T(0.2);
+  CHECK_FALSE(std::isfinite(gecko::detail::carlson_rf_imp<T, default_policy>(zero, a, zero)));
+  CHECK_FALSE(std::isfinite(
+      gecko::detail::carlson_rf_roots_imp<T, default_policy>(zero, a, zero, zero, std::sqrt(a), zero)));
+  CHECK_FALSE(std::isfinite(gecko::detail::carlson_rd_imp<T, default_policy>(zero, zero, a)));
 }
