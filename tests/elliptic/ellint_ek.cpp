@@ -23,7 +23,7 @@ const reference_table& complete_table() {
 TEMPLATE_TEST_CASE("ellint_ek: mpmath table: E <= 8 eps, K <= 3 eps", "[ellint_ek]", float, double, long double) {
   const auto& t = complete_table();
   const auto m = t.column("m");
-  auto below_one = [&](std::size_t i, double) { return t.get<float>(i, m) < 1; };
+  auto below_one = [&](std::size_t i, const auto&) { return t.get<float>(i, m) < 1; };
   CHECK(gecko_test::kernel_tally<TestType>(
             t, "ellint_ek.E", std::array<std::size_t, 1>{m}, t.column("E"),
             [](auto mm) { return gecko::ellint_ek(mm).E; }, below_one)

@@ -24,7 +24,7 @@ TEMPLATE_TEST_CASE("ellint_k: mpmath table: <= 3 eps", "[ellint_k]", float, doub
   CHECK(gecko_test::kernel_tally<TestType>(
             t, "ellint_k", std::array<std::size_t, 1>{m}, t.column("K"),
             [](auto mm) { return gecko::ellint_k(mm); },
-            [&](std::size_t i, double) { return t.get<float>(i, m) < 1; })
+            [&](std::size_t i, const auto&) { return t.get<float>(i, m) < 1; })
             .overall.worst <= 3);
 }
 

@@ -31,7 +31,9 @@ auto call_row(const reference_table& t, std::size_t row, const std::array<std::s
 // double, long double: the table's inputs (exact doubles) against its mpmath column `ref`.
 // float: the inputs rounded to float, against the double kernel at those same rounded inputs
 // (the mpmath value belongs to the unrounded inputs); rows whose inputs do not round to normal
-// floats are skipped, and so are rows where float_use(row, double reference) is false.
+// floats are skipped, and so are rows where float_use(row, reference) is false; reference() is
+// the double kernel's value there, computed only if float_use asks for it (so that float_use can
+// first rule out rows the double kernel would refuse).
 template <class T, std::size_t N, class Kernel, class FloatUse>
 error_tally kernel_tally(const reference_table& t, const std::string& what,
                          const std::array<std::size_t, N>& in, std::size_t ref, const Kernel& kernel,
@@ -48,7 +50,7 @@ error_tally kernel_tally(const reference_table& t, const std::string& what,
         [&](std::size_t i) {
           for (std::size_t c : in)
             if (!float_representable(t.get<double>(i, c))) return false;
-          return float_use(i, want(i));
+          return float_use(i, [&] { return want(i); });
         });
   } else {
     return tally_table<T>(
@@ -59,7 +61,7 @@ error_tally kernel_tally(const reference_table& t, const std::string& what,
 template <class T, std::size_t N, class Kernel>
 error_tally kernel_tally(const reference_table& t, const std::string& what,
                          const std::array<std::size_t, N>& in, std::size_t ref, const Kernel& kernel) {
-  return kernel_tally<T>(t, what, in, ref, kernel, [](std::size_t, double) { return true; });
+  return kernel_tally<T>(t, what, in, ref, kernel, [](std::size_t, const auto&) { return true; });
 }
 
 }  // namespace gecko_test
