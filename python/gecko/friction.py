@@ -410,7 +410,8 @@ def resonant_frequency(D, L, E, rho, *, errors: str = "raise"):
 
 @dataclasses.dataclass(frozen=True)
 class SlidingModel:
-    """N spatulae of rigidity K (symmetric positive definite, K[0,1] < 0), re-sticking with
+    """N spatulae of rigidity K (symmetric positive definite; K[0,1] < 0 the paper's curved beam,
+    K[0,1] = 0 a straight pillar, K[0,1] > 0 a beam dragged against its curvature), re-sticking with
     forces (f_par1, f_perp1), detaching at the energy ``law(V)``.
 
     ``law``: :class:`ViscoelasticDetachment`, :class:`EyringDetachment`, or any callable of V

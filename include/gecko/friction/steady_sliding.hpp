@@ -23,7 +23,8 @@
 
 namespace gecko {
 
-// N spatulae, each with rigidity K (symmetric positive definite, K_par_perp < 0) and the forces
+// N spatulae, each with rigidity K (symmetric positive definite; K_par_perp < 0 for the paper's
+// curved beam, >= 0 for straight pillars or dragging against the curvature) and the forces
 // (f_par1, f_perp1) just after re-sticking.
 template <class T>
 struct sliding_params {
@@ -86,7 +87,11 @@ bool check_sliding_params(const char* function, const sliding_params<T>& p) {
   using std::isfinite;
   if (!check_positive<T, Policy>(function, "N", p.N, "0 < N < inf (number of spatulae)"))
     return false;
-  if (!check_coupled_rigidity<T, Policy>(function, p.K)) return false;
+  // Any symmetric positive definite K: K_par_perp < 0 is the paper's curved beam (eq 1);
+  // K_par_perp = 0 a straight pillar (no friction-adhesion coupling) and K_par_perp > 0 the
+  // beam dragged against its curvature (the paper's control: the normal force grows
+  // compressive with the stretch, regular friction).
+  if (!check_spd<T, Policy>(function, "K", p.K)) return false;
   if (!isfinite(p.f_par1)) {
     raise_domain_error<T, Policy>(function, "f_par1", p.f_par1, "finite f_par1");
     return false;
