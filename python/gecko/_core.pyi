@@ -47,7 +47,13 @@ def simulate_spatulae(N: float, K: _F64, f_par1: float, f_perp1: float, V: float
 def fit_steady_sliding(V: _F64, F_par: _F64, F_perp: _F64, N: float, K: _F64, f_par1: float,
                        f_perp1: float, kind: int, G0: float, V_star: float, n: float,
                        fit_f_par1: bool = True, fit_f_perp1: bool = True,
-                       fit_coupling: bool = False, max_iterations: int = 200) -> dict[str, Any]: ...
+                       fit_coupling: bool = False, max_iterations: int = 200,
+                       sigma_par: Optional[_F64] = None, sigma_perp: Optional[_F64] = None,
+                       absolute_sigma: bool = True, profile: bool = False,
+                       profile_delta: float = 1.0, max_condition: float = 1e10,
+                       custom_G: Optional[Callable[[_F64, _F64], Any]] = None,
+                       custom_names: list[str] = ..., custom_values: list[float] = ...,
+                       custom_positive: list[bool] = ...) -> dict[str, Any]: ...
 
 # ---- seta (src/bindings/seta.cpp) ------------------------------------------------------------
 # A design is 9 float64: EI1, EI2, EA1, EA2, l1, l2, alpha1, alpha2, w. Column dicts hold float64
@@ -72,3 +78,76 @@ def seta_shape(params: _F64, Ft: float, steps: int = 200) -> dict[str, Any]: ...
 def fiber_critical_line_at(params: _F64, Ft: _F64, errors: int = 0, tolerance: float = ...) -> dict[str, Any]: ...
 def kendall_fn(Ft: _F64, EA: _F64, w: _F64, errors: int = 0) -> _F64: ...
 def rivlin_fn(Ft: _F64, w: _F64, errors: int = 0) -> _F64: ...
+
+# ---- seta domain types (src/bindings/seta_types.cpp) -----------------------------------------
+import enum
+
+class SetaDesign:
+    """A two-level seta design, validated on construction (ValueError naming the field and range)."""
+    fields: tuple[str, ...]
+    defaults: dict[str, float]
+    # name -> (lower, upper, lower inclusive, infinity allowed, the range as the error states it)
+    domain: dict[str, tuple[float, float, bool, bool, str]]
+    descriptions: dict[str, str]
+    def __init__(self, *, EI1: float = ..., EI2: float = ..., EA1: float = ..., EA2: float = ...,
+                 l1: float = ..., l2: float = ..., alpha1: float = ..., alpha2: float = ...,
+                 w: float = ...) -> None: ...
+    @staticmethod
+    def admissible(name: str, value: float) -> bool: ...
+    @property
+    def EI1(self) -> float: ...
+    @property
+    def EI2(self) -> float: ...
+    @property
+    def EA1(self) -> float: ...
+    @property
+    def EA2(self) -> float: ...
+    @property
+    def l1(self) -> float: ...
+    @property
+    def l2(self) -> float: ...
+    @property
+    def alpha1(self) -> float: ...
+    @property
+    def alpha2(self) -> float: ...
+    @property
+    def w(self) -> float: ...
+    @property
+    def ft_max(self) -> float: ...
+    def check_ft(self, Ft: float) -> None: ...
+    def to_array(self) -> _F64: ...
+
+class CriticalStatus(enum.IntEnum):
+    converged = 0
+    not_converged = 1
+    no_critical_state = 2
+    unsupported_state = 3
+    singular = 4
+    invalid_input = 5
+    not_reached = 6
+    inadmissible = 7
+
+class LineEnd(enum.IntEnum):
+    reached_ft_end = 0
+    reached_ft_max = 1
+    turned_back = 2
+    no_convergence = 3
+    unsupported_state = 4
+    max_points = 5
+    no_natural_state = 6
+    stalled = 7
+
+class MinimumStatus(enum.IntEnum):
+    stationary = 0
+    range_start = 1
+    range_end = 2
+    line_incomplete = 3
+    not_certified = 4
+
+class FitStatus(enum.IntEnum):
+    converged = 0
+    max_iterations = 1
+    singular = 2
+    not_identifiable = 3
+    no_progress = 4
+    non_finite = 5

@@ -1,7 +1,7 @@
 """gecko.friction — frictional adhesion dynamics of the gecko spatula and seta.
 
 Implements paper 000 (Yamaguchi, Gravish, Autumn, Creton, J. Phys. Chem. B 113, 3622 (2009)) as
-restated in models.md §2, plus two checks beyond it:
+restated in docs/theory/frictional_adhesion.md, plus two checks beyond it:
 
 * curved-beam compliance and rigidity by Castigliano for any centreline ``z(x)``
   (:func:`castigliano_compliance`), and the Appendix-1 parabola in closed form
@@ -30,6 +30,10 @@ import numpy as np
 
 from . import _core
 from ._vectorize import error_code as _error_code, flat_args as _flat_args, shaped as _shaped
+from ._vectorize import check_count as _check_count, real_array as _real_array
+
+#: outcome of a Levenberg-Marquardt fit, an IntEnum bound from C++ (gecko/friction/fit.hpp)
+FitStatus = _core.FitStatus
 
 __all__ = [
     # beam
@@ -41,27 +45,27 @@ __all__ = [
     "viscoelastic_detachment", "eyring_detachment", "ViscoelasticDetachment", "EyringDetachment",
     "detachment_stretch", "resonant_frequency",
     # steady sliding
-    "SlidingModel", "FIG6_VISCOELASTIC", "FIG6_PLASTIC", "steady_sliding", "SteadySliding",
+    "SlidingModel", "FIG6_VISCOELASTIC", "FIG6_PLASTIC", "steady_sliding", "SteadySliding", "FitStatus",
     # beyond the paper
     "simulate_spatulae", "SpatulaSimulation", "fit_steady_sliding", "SteadySlidingFit",
     "ParametricLaw",
 ]
 
 def _matrix(K, name: str = "K") -> np.ndarray:
-    K = np.asarray(K, dtype=np.float64)
+    K = _real_array(K, name)
     if K.shape != (2, 2):
         raise ValueError(f"{name} must be a 2x2 matrix, got shape {K.shape}")
     return np.ascontiguousarray(K).reshape(-1)
 
 
 def _scalar(x, name: str) -> float:
-    a = np.asarray(x, dtype=np.float64)
+    a = _real_array(x, name)
     if a.shape != ():
         raise ValueError(f"{name} must be a scalar, got shape {a.shape}")
     return float(a)
 
 
-# ---- curved beam (models.md §2, Appendix 1) ------------------------------------------------
+# ---- curved beam (docs/theory/frictional_adhesion.md, Appendix 1) ------------------------------------------------
 
 _MAX_LEVELS = 9          # tanh-sinh levels of the C++ table (graphs z(x))
 _CURVE_MAX_LEVELS = 12   # levels of the numpy tanh-sinh for parametric curves
@@ -216,27 +220,61 @@ def castigliano_compliance(z: Optional[Callable] = None, dzdx: Optional[Callable
                            L: float = 1.0, EI: float = 1.0, EA: float = np.inf, tol: float = 0.0,
                            max_levels: Optional[int] = None, report: bool = False, curve=None,
                            curve_derivatives=None):
-    """Tip compliance C (2x2) of a planar curved beam, ``D = C F``; ``rigidity(C)`` gives K.
+    """Tip compliance C (2x2) of a planar curved beam, D = C F; :func:`rigidity` gives K.
 
-    The moment is ``M = -(z - z_tip) F_par - (x - x_tip) F_perp`` (paper 000 eq A1.1) and, for
-    finite ``EA``, the axial force ``F_par t_x - F_perp t_z`` adds its energy.
+    Castigliano's theorem on the bending energy (paper 000 Appendix 1, eq A1.1:
+    M = -(z - z_tip) F_par - (x - x_tip) F_perp), plus the axial energy F_par t_x - F_perp t_z
+    for a finite ``EA``. Tanh-sinh quadrature; for graphs after x = L t^2 (3 - 2t), which copes
+    with a tip where ds/dx ~ x^-1/2 and with a vertical tangent at the clamp.
 
-    Centreline, one of:
+    Parameters
+    ----------
+    z : callable, optional
+        A graph z(x), 0 <= x <= L, tip at x = 0, clamp at x = L: a Python function of one float.
+    dzdx : callable, optional
+        Its slope; default the complex step Im z(x + ih)/h (exact to rounding). A ``z`` that
+        drops the imaginary part (abs, np.real, a spline) is detected at three probe points: a
+        ``RuntimeWarning``, and a five-point finite difference (accuracy ~1e-11) replaces it.
+    L : float, optional
+        Horizontal extent of a graph (default 1).
+    EI : float, optional
+        Bending stiffness (default 1).
+    EA : float, optional
+        Axial stiffness (default inf: bending only).
+    tol : float, optional
+        Step between two quadrature levels that ends the refinement (0: eps^(2/3)).
+    max_levels : int, optional
+        Maximum tanh-sinh levels: 3..9 for graphs (default 9), 3..12 for curves (default 12);
+        out of range is an error.
+    report : bool, optional
+        Also return a dict with the error estimate, levels and evaluations.
+    curve : pair, optional
+        A parametric centreline (x, z), tip at t = 0, clamp at t = 1: two numpy-vectorised
+        callables of t (derivatives by the complex step, checked as for ``z``), or two arrays
+        of sampled points interpolated by cubic splines in the normalised chord length (needs
+        scipy). Any shape: vertical pillars, hooks, S-shapes. ``L`` is not used.
+    curve_derivatives : pair of callables, optional
+        (dx/dt, dz/dt) for a callable ``curve``.
 
-    * a graph ``z(x)``, ``0 <= x <= L``, tip at ``x = 0``, clamp at ``x = L``: ``z`` a Python
-      callable of one float; slope from ``dzdx`` if given, else by the complex step
-      ``Im z(x + i h) / h`` (exact to rounding). A ``z`` that drops the imaginary part (abs,
-      np.real, a spline) is detected at three probe points: a ``RuntimeWarning`` and a
-      finite-difference slope (accuracy ~1e-11) then replace the complex step.
-    * ``curve=(x, z)``, parametric with the tip at ``t = 0`` and the clamp at ``t = 1``: two
-      numpy-vectorised callables of ``t`` (derivatives by the complex step, checked the same
-      way, or ``curve_derivatives=(dx, dz)``), or two arrays of sampled points, interpolated by a
-      cubic spline in the normalised chord length (needs scipy). Any shape: vertical pillars,
-      hooks, S-shapes; ``L`` is not used.
+    Returns
+    -------
+    numpy.ndarray of shape (2, 2), or (numpy.ndarray, dict) with ``report=True``
 
-    Tanh-sinh quadrature; ``tol`` (0: eps**(2/3)) is the step between two levels (the result is
-    then accurate to a few eps for smooth integrands), ``max_levels`` at most 9 for graphs and
-    12 for curves. With ``report=True`` returns ``(C, info)``.
+    Raises
+    ------
+    ValueError
+        If L, EI, EA, tol or max_levels is out of range, or the energy integrals are not finite.
+
+    Examples
+    --------
+    >>> import numpy as np, gecko
+    >>> C = gecko.castigliano_compliance(lambda x: np.sqrt(x) / 2, L=1.0)
+    >>> np.allclose(C, gecko.parabolic_beam_compliance(1.0, 1.0), rtol=1e-13)
+    True
+    >>> hook = gecko.castigliano_compliance(curve=(lambda t: np.sin(np.pi * t),
+    ...                                            lambda t: 1 - np.cos(np.pi * t)))
+    >>> np.allclose(hook, [[1.5 * np.pi, 2.0], [2.0, 0.5 * np.pi]], rtol=1e-14)
+    True
     """
     EI_, EA_ = _scalar(EI, "EI"), _scalar(EA, "EA")
     tol = _scalar(tol, "tol")
@@ -285,21 +323,106 @@ def _parabolic(L, EI, errors, rigid):
 
 
 def parabolic_beam_compliance(L=1.0, EI=1.0, *, errors: str = "raise"):
-    """Closed-form compliance of the parabola z = sqrt(L x)/2 (Appendix 1, a11 sign corrected).
+    """Closed-form compliance of the parabolic beam z = sqrt(L x)/2 (paper 000 eq A1.5).
 
-    ``C = (L**3 / 2 EI) [[a11, a12], [a12, a22]]``; broadcasts over L and EI, shape (..., 2, 2).
+    C = (L^3 / 2 EI) [[a11, a12], [a12, a22]], with the sign of a11 corrected
+    (docs/theory/frictional_adhesion.md). Broadcasts over ``L`` and ``EI``.
+
+    Parameters
+    ----------
+    L : array_like, optional
+        Length along x (default 1), > 0.
+    EI : array_like, optional
+        Bending stiffness (default 1), > 0.
+    errors : {"raise", "nan"}, optional
+        Out-of-range input raises ``ValueError`` (default) or gives NaN for that element.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (..., 2, 2).
+
+    Raises
+    ------
+    ValueError
+        If an argument is out of range with ``errors="raise"``; the message names it and the
+        allowed range.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> gecko.parabolic_beam_compliance(1.0, 1.0).round(6)
+    array([[0.132362, 0.210044],
+           [0.210044, 0.348521]])
     """
     return _parabolic(L, EI, errors, False)
 
 
 def parabolic_beam_rigidity(L=1.0, EI=1.0, *, errors: str = "raise"):
-    """K = C**-1 of the parabolic beam; normalised so K[0,0] = 5 it is [[5, -3.013], [-3.013, 1.899]]."""
+    """Rigidity K = C^-1 of the parabolic beam (paper 000 Appendix 1, eqs 2 and 12).
+
+    Normalised to K[0, 0] = 5 it is [[5, -3.0134], [-3.0134, 1.8989]], which the paper rounds to
+    [[5, -3], [-3, 2]].
+
+    Parameters
+    ----------
+    L : array_like, optional
+        Length along x (default 1), > 0.
+    EI : array_like, optional
+        Bending stiffness (default 1), > 0.
+    errors : {"raise", "nan"}, optional
+        Out-of-range input raises ``ValueError`` (default) or gives NaN for that element.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (..., 2, 2).
+
+    Raises
+    ------
+    ValueError
+        If an argument is out of range with ``errors="raise"``; the message names it and the
+        allowed range.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> K = gecko.parabolic_beam_rigidity()
+    >>> (5 * K / K[0, 0]).round(4)
+    array([[ 5.    , -3.0134],
+           [-3.0134,  1.8989]])
+    """
     return _parabolic(L, EI, errors, True)
 
 
 def rigidity(C, *, errors: str = "raise"):
-    """K = C**-1 of symmetric positive definite 2x2 compliances C (shape (..., 2, 2))."""
-    C = np.asarray(C, dtype=np.float64)
+    """Rigidity K = C^-1 of symmetric positive definite 2x2 compliances.
+
+    Parameters
+    ----------
+    C : array_like
+        Compliances, shape (..., 2, 2).
+    errors : {"raise", "nan"}, optional
+        Out-of-range input raises ``ValueError`` (default) or gives NaN for that element.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (..., 2, 2).
+
+    Raises
+    ------
+    ValueError
+        If ``C`` is not of shape (..., 2, 2), or not symmetric positive definite.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> gecko.rigidity([[2.0, 1.0], [1.0, 1.0]])
+    array([[ 1., -1.],
+           [-1.,  2.]])
+    """
+    C = _real_array(C, "C")
     if C.shape[-2:] != (2, 2):
         raise ValueError(f"C must have shape (..., 2, 2), got {C.shape}")
     out = _core.rigidity(np.ascontiguousarray(C).reshape(-1), _error_code(errors))
@@ -309,7 +432,23 @@ def rigidity(C, *, errors: str = "raise"):
 # ---- paths and force traces (eqs 1-3, 11-13; Figs 4 and 8) -------------------------------
 
 class DisplacementPath(NamedTuple):
-    """Vertices of a piecewise-linear path: at time ``t[i]`` the tip is at ``(d_par[i], d_perp[i])``."""
+    """Vertices of a piecewise-linear displacement path for :func:`force_trace`.
+
+    At time ``t[i]`` the tip is at ``(d_par[i], d_perp[i])``; between vertices it moves linearly.
+
+    Attributes
+    ----------
+    t : tuple of float
+        Strictly increasing times.
+    d_par, d_perp : tuple of float
+        Lateral and normal displacements at those times.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> gecko.FIG4_SPATULA_PATH.d_perp               # press in, then drag at fixed depth
+    (0.0, 1.0, 1.0)
+    """
 
     t: tuple
     d_par: tuple
@@ -323,12 +462,42 @@ FIG8_SETA_PATH = DisplacementPath((0.0, 1.0, 2.0, 3.0), (0.0, 4.0, 6.0, 0.0), (0
 
 
 def paper_rigidity() -> np.ndarray:
-    """The paper's illustrative rigidity [[5, -3], [-3, 2]] (eqs 2 and 12)."""
+    """The paper's illustrative rigidity [[5, -3], [-3, 2]] (paper 000 eqs 2 and 12).
+
+    Returns
+    -------
+    numpy.ndarray
+        A new (2, 2) array.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> gecko.paper_rigidity()
+    array([[ 5., -3.],
+           [-3.,  2.]])
+    """
     return np.array([[5.0, -3.0], [-3.0, 2.0]])
 
 
 class ForceTrace(NamedTuple):
-    """A force trace, arrays ready to plot: time, displacement and force components."""
+    """A force trace from :func:`force_trace`, arrays ready to plot.
+
+    Attributes
+    ----------
+    t : numpy.ndarray
+        Sample times.
+    d_par, d_perp : numpy.ndarray
+        Displacements of the tip.
+    f_par, f_perp : numpy.ndarray
+        Forces f = K d (f_perp < 0: tensile).
+
+    Examples
+    --------
+    >>> import gecko
+    >>> tr = gecko.force_trace()
+    >>> float(tr.f_perp.max()), float(tr.f_perp.min())   # compressive, then tensile
+    (2.0, -7.0)
+    """
 
     t: np.ndarray
     d_par: np.ndarray
@@ -339,16 +508,41 @@ class ForceTrace(NamedTuple):
 
 def force_trace(K=None, path=FIG4_SPATULA_PATH, *, times=None, samples_per_segment: int = 50
                 ) -> ForceTrace:
-    """``f(t) = K d(t)`` along a piecewise-linear path (default: Fig 4 with the paper's K).
+    """Forces f(t) = K d(t) along a piecewise-linear displacement path (paper 000 eqs 1-3, 11-13).
 
-    ``path`` is a :class:`DisplacementPath` or a tuple ``(t, d_par, d_perp)`` with strictly
-    increasing ``t``. Sampled at ``times`` (inside the path) if given, else at
-    ``samples_per_segment`` points per leg plus every vertex exactly.
+    Parameters
+    ----------
+    K : array_like, optional
+        Rigidity (2, 2), symmetric positive definite; default :func:`paper_rigidity`.
+    path : DisplacementPath or (t, d_par, d_perp), optional
+        Vertices of the path, ``t`` strictly increasing; default :data:`FIG4_SPATULA_PATH`
+        (paper 000 Fig 4). :data:`FIG8_SETA_PATH` is Fig 8's.
+    times : array_like, optional
+        Sample times inside the path; default ``samples_per_segment`` points per leg plus every
+        vertex exactly.
+    samples_per_segment : int, optional
+        Default 50.
+
+    Returns
+    -------
+    ForceTrace
+        Arrays ``t, d_par, d_perp, f_par, f_perp``.
+
+    Raises
+    ------
+    ValueError
+        If K is not symmetric positive definite or the path is malformed.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> tr = gecko.force_trace()                    # Fig 4: compression, then drag
+    >>> float(tr.f_perp[-1]), float(tr.f_par[-1])   # tensile at the end of the drag
+    (-7.0, 12.0)
     """
     K = paper_rigidity() if K is None else K
-    t, d_par, d_perp = (np.ascontiguousarray(np.asarray(a, dtype=np.float64).reshape(-1))
-                        for a in path)
-    tt = None if times is None else np.ascontiguousarray(np.asarray(times, dtype=np.float64).reshape(-1))
+    t, d_par, d_perp = (np.ascontiguousarray(_real_array(a, f"path[{i}]").reshape(-1)) for i, a in enumerate(path))
+    tt = None if times is None else np.ascontiguousarray(_real_array(times, "times").reshape(-1))
     r = _core.force_trace(_matrix(K), t, d_par, d_perp, tt, int(samples_per_segment))
     return ForceTrace(r["t"], r["d_par"], r["d_perp"], r["f_par"], r["f_perp"])
 
@@ -356,20 +550,85 @@ def force_trace(K=None, path=FIG4_SPATULA_PATH, *, times=None, samples_per_segme
 # ---- detachment (eqs 4, 7, 8, A2.6) --------------------------------------------------------
 
 def viscoelastic_detachment(V, G0, V_star, n, *, errors: str = "raise"):
-    """Eq 7: G(V) = G0 (1 + (V/V*)**n); V >= 0, G0, V*, n > 0. Broadcasts."""
+    """Viscoelastic detachment energy, paper 000 eq 7: G(V) = G0 (1 + (V/V*)^n).
+
+    Parameters
+    ----------
+    V : array_like
+        Drag velocity, >= 0.
+    G0, V_star, n : array_like
+        Threshold energy, characteristic velocity, exponent; all > 0. Broadcast together.
+    errors : {"raise", "nan"}, optional
+        Out-of-range input raises ``ValueError`` (default) or gives NaN for that element.
+
+    Returns
+    -------
+    float or numpy.ndarray
+
+    Raises
+    ------
+    ValueError
+        If an argument is out of range with ``errors="raise"``; the message names it and the
+        allowed range.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> float(gecko.viscoelastic_detachment(4.0, 1.0, 1.0, 0.5))
+    3.0
+    """
     shape, flat = _flat_args((V, G0, V_star, n))
     return _shaped(_core.viscoelastic_detachment(*flat, _error_code(errors)), shape)
 
 
 def eyring_detachment(V, G0, V_star, *, errors: str = "raise"):
-    """Eq 8 (plastic / Eyring): G(V) = G0 asinh(V/V*); V >= 0, G0, V* > 0. Broadcasts."""
+    """Plastic (Eyring) detachment energy, paper 000 eq 8: G(V) = G0 asinh(V/V*).
+
+    Parameters
+    ----------
+    V : array_like
+        Drag velocity, >= 0.
+    G0, V_star : array_like
+        Threshold energy and characteristic velocity, > 0. Broadcast together.
+    errors : {"raise", "nan"}, optional
+        Out-of-range input raises ``ValueError`` (default) or gives NaN for that element.
+
+    Returns
+    -------
+    float or numpy.ndarray
+
+    Raises
+    ------
+    ValueError
+        If an argument is out of range with ``errors="raise"``; the message names it and the
+        allowed range.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> round(float(gecko.eyring_detachment(1.0, 1.0, 1.0)), 6)
+    0.881374
+    """
     shape, flat = _flat_args((V, G0, V_star))
     return _shaped(_core.eyring_detachment(*flat, _error_code(errors)), shape)
 
 
 @dataclasses.dataclass(frozen=True)
 class ViscoelasticDetachment:
-    """The law of eq 7 as a callable object, G = law(V)."""
+    """The viscoelastic law of paper 000 eq 7 as a callable, G = law(V).
+
+    Parameters
+    ----------
+    G0, V_star, n : float
+        See :func:`viscoelastic_detachment`.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> law = gecko.ViscoelasticDetachment(G0=1.0, V_star=1.0, n=0.5)
+    >>> float(law(4.0))
+    3.0
+    """
 
     G0: float
     V_star: float
@@ -381,7 +640,19 @@ class ViscoelasticDetachment:
 
 @dataclasses.dataclass(frozen=True)
 class EyringDetachment:
-    """The law of eq 8 as a callable object, G = law(V)."""
+    """The plastic (Eyring) law of paper 000 eq 8 as a callable, G = law(V).
+
+    Parameters
+    ----------
+    G0, V_star : float
+        See :func:`eyring_detachment`.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> gecko.EyringDetachment(1.0, 1.0)([0.0, 1.0]).round(6)
+    array([0.      , 0.881374])
+    """
 
     G0: float
     V_star: float
@@ -391,16 +662,72 @@ class EyringDetachment:
 
 
 def detachment_stretch(K_par_par, f_par1, G, *, errors: str = "raise"):
-    """A2.6: lateral stretch at detachment, (-f1 + sqrt(f1**2 + 2 K G)) / K (cancellation-free)."""
+    """Lateral stretch at detachment, paper 000 eq A2.6.
+
+    Solves K dd^2/2 + f_par1 dd = G for the positive root, (-f1 + sqrt(f1^2 + 2 K G))/K, in a form
+    without cancellation.
+
+    Parameters
+    ----------
+    K_par_par : array_like
+        Lateral rigidity, > 0.
+    f_par1 : array_like
+        Lateral force just after re-sticking, finite.
+    G : array_like
+        Detachment energy, >= 0.
+    errors : {"raise", "nan"}, optional
+        Out-of-range input raises ``ValueError`` (default) or gives NaN for that element.
+
+    Returns
+    -------
+    float or numpy.ndarray
+
+    Raises
+    ------
+    ValueError
+        If an argument is out of range with ``errors="raise"``; the message names it and the
+        allowed range.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> float(gecko.detachment_stretch(2.0, 0.0, 1.0))
+    1.0
+    """
     shape, flat = _flat_args((K_par_par, f_par1, G))
     return _shaped(_core.detachment_stretch(*flat, _error_code(errors)), shape)
 
 
 def resonant_frequency(D, L, E, rho, *, errors: str = "raise"):
-    """Eq 4: nu_R = 0.14 (D / L**2) sqrt(E / rho); t_off ~ 1 / nu_R.
+    """Resonant frequency of a cantilevered spatula, paper 000 eq 4: 0.14 (D/L^2) sqrt(E/rho).
 
-    For D = 100 nm, L = 1 um, E = 1.5 GPa, rho = 1000 kg/m**3 this is 17.1 MHz; the paper prints
-    34.3 MHz, twice what its own formula gives.
+    The re-sticking time is about its inverse. For D = 100 nm, L = 1 um, E = 1.5 GPa,
+    rho = 1000 kg/m^3 this is 17.1 MHz; the paper prints 34.3 MHz, twice what its own formula gives
+    (docs/theory/frictional_adhesion.md).
+
+    Parameters
+    ----------
+    D, L, E, rho : array_like
+        Diameter, length, Young's modulus, density (SI), all > 0.
+    errors : {"raise", "nan"}, optional
+        Out-of-range input raises ``ValueError`` (default) or gives NaN for that element.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        In Hz for SI input.
+
+    Raises
+    ------
+    ValueError
+        If an argument is out of range with ``errors="raise"``; the message names it and the
+        allowed range.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> round(float(gecko.resonant_frequency(100e-9, 1e-6, 1.5e9, 1000.0)) / 1e6, 1)
+    17.1
     """
     shape, flat = _flat_args((D, L, E, rho))
     return _shaped(_core.resonant_frequency(*flat, _error_code(errors)), shape)
@@ -410,12 +737,29 @@ def resonant_frequency(D, L, E, rho, *, errors: str = "raise"):
 
 @dataclasses.dataclass(frozen=True)
 class SlidingModel:
-    """N spatulae of rigidity K (symmetric positive definite; K[0,1] < 0 the paper's curved beam,
-    K[0,1] = 0 a straight pillar, K[0,1] > 0 a beam dragged against its curvature), re-sticking with
-    forces (f_par1, f_perp1), detaching at the energy ``law(V)``.
+    """N spatulae of rigidity K that re-stick with forces (f_par1, f_perp1) and detach at law(V).
 
-    ``law``: :class:`ViscoelasticDetachment`, :class:`EyringDetachment`, or any callable of V
-    (called with the array of velocities first, element by element if that fails).
+    K is symmetric positive definite: K[0,1] < 0 the paper's curved beam, K[0,1] = 0 a straight
+    pillar, K[0,1] > 0 a beam dragged against its curvature (regular friction).
+
+    Parameters
+    ----------
+    N : float
+        Number of spatulae.
+    K : tuple
+        Rigidity ((K_par_par, K_par_perp), (K_perp_par, K_perp_perp)), symmetric positive
+        definite with K[0][1] < 0.
+    f_par1, f_perp1 : float
+        Forces just after re-sticking.
+    law : callable
+        :class:`ViscoelasticDetachment`, :class:`EyringDetachment`, or any callable G(V) (called
+        with the array of velocities first, element by element if that fails).
+
+    Examples
+    --------
+    >>> import gecko
+    >>> gecko.FIG6_VISCOELASTIC.replace(N=2e5).N
+    200000.0
     """
 
     N: float
@@ -440,7 +784,24 @@ FIG6_PLASTIC = SlidingModel(N=1e5, K=((6.0, -5.0), (-5.0, 5.0)), f_par1=6e-7, f_
 
 
 class SteadySliding(NamedTuple):
-    """Time-averaged forces of the N spatulae, stretch at detachment and t_on = stretch / V."""
+    """Mean forces of steady sliding, from :func:`steady_sliding`.
+
+    Attributes
+    ----------
+    F_par, F_perp : float or numpy.ndarray
+        Time-averaged lateral and normal force of the N spatulae (F_perp < 0: tensile).
+    stretch : float or numpy.ndarray or None
+        Lateral stretch at detachment (None with ``forces_only=True``).
+    t_on : float or numpy.ndarray or None
+        Attached time per cycle, stretch / V.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> r = gecko.steady_sliding(1e-4)
+    >>> round(float(r.F_par), 4), r.t_on > 0
+    (0.0424, True)
+    """
 
     F_par: object
     F_perp: object
@@ -465,13 +826,40 @@ def _law_values(law, V_flat):
 
 def steady_sliding(V, model: SlidingModel = FIG6_VISCOELASTIC, *, t_off: float = 0.0,
                    errors: str = "raise", forces_only: bool = False) -> SteadySliding:
-    """Steady-sliding forces F_par(V), F_perp(V) of eqs 9-10, with finite ``t_off`` (eqs 5-6):
+    """Steady-sliding mean forces of paper 000 eqs 9-10, with a finite re-sticking time.
 
-        F = N t_on / (t_on + t_off) * (f1 + K[:,0] stretch / 2),  t_on = stretch / V,
+    F = N t_on/(t_on + t_off) (f1 + K[:, 0] dd/2), t_on = dd/V, where the stretch dd solves
+    K dd^2/2 + f_par1 dd = G(V) (eq A2.6). Built-in laws run entirely in C++.
 
-    where the stretch at detachment solves K dd**2/2 + f_par1 dd = G(V) (A2.6). ``V`` broadcasts
-    (any shape); built-in laws run entirely in C++, other callables are evaluated first.
-    ``forces_only=True`` skips ``stretch`` and ``t_on`` (returned as None): faster for long arrays.
+    Parameters
+    ----------
+    V : array_like
+        Drag velocities (any shape), >= 0.
+    model : SlidingModel, optional
+        Default :data:`FIG6_VISCOELASTIC`.
+    t_off : float, optional
+        Re-sticking time (default 0, the paper's limit).
+    errors : {"raise", "nan"}, optional
+        Out-of-range input raises (default) or gives NaN.
+    forces_only : bool, optional
+        Skip ``stretch`` and ``t_on`` (None): faster for long arrays.
+
+    Returns
+    -------
+    SteadySliding
+        ``F_par, F_perp, stretch, t_on`` of the shape of ``V``.
+
+    Raises
+    ------
+    ValueError
+        If V < 0 or the model is invalid, with ``errors="raise"``.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> r = gecko.steady_sliding([1e-5, 1e-4, 1e-3])
+    >>> r.F_par.round(4), r.F_perp.round(4)       # the normal force turns tensile as V grows
+    (array([0.0349, 0.0424, 0.0586]), array([ 0.0014, -0.0026, -0.0113]))
     """
     code = _error_code(errors)
     shape, (v,) = _flat_args((V,))
@@ -502,7 +890,28 @@ def steady_sliding(V, model: SlidingModel = FIG6_VISCOELASTIC, *, t_off: float =
 # ---- beyond the paper: stochastic check and fit -------------------------------------------
 
 class SpatulaSimulation(NamedTuple):
-    """Result of :func:`simulate_spatulae`: the force of N spatulae estimated from M simulated."""
+    """Result of :func:`simulate_spatulae`: the force of N spatulae estimated from M simulated.
+
+    Attributes
+    ----------
+    mean_par, mean_perp : float
+        Time averages of F(t) over the simulated duration.
+    std_par, std_perp : float
+        Standard deviations of F(t) over the sample times (the fluctuation).
+    stretch, t_on : float
+        Stretch at detachment and attached time per cycle.
+    detachments : int
+        Detachments simulated.
+    t, F_par, F_perp : numpy.ndarray
+        Sample times (midpoints) and F(t) there.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> sim = gecko.simulate_spatulae(1e-4, spatulae=200, seed=1)
+    >>> sim.detachments > 0, sim.F_par.shape
+    (True, (200,))
+    """
 
     mean_par: float      # time average of F_par(t) over [0, duration]
     mean_perp: float
@@ -520,11 +929,46 @@ def simulate_spatulae(V: float, model: SlidingModel = FIG6_VISCOELASTIC, *, spat
                       duration: Optional[float] = None, t_off: float = 0.0,
                       resticking: str = "fixed", samples: int = 200, seed: int = 1
                       ) -> SpatulaSimulation:
-    """Simulate ``spatulae`` independent spatulae dragged at ``V`` (stick, stretch, detach,
-    re-stick after ``t_off`` — fixed, or exponential with that mean) from a stationary random
-    phase; seeded ``mt19937_64``, exact event-driven integration. ``duration`` defaults to 100
-    cycles. The means converge to :func:`steady_sliding` with the same ``t_off``: the error
-    falls as (M T)**-1/2 for exponential re-sticking and as M**-1/2 T**-1 for a fixed t_off.
+    """Simulate independent spatulae dragged at ``V``: a stochastic check of :func:`steady_sliding`.
+
+    Each spatula sticks, stretches, detaches and re-sticks after ``t_off`` (fixed, or exponential
+    with that mean), starting from a stationary random phase; seeded ``mt19937_64``, exact
+    event-driven integration. The means converge to :func:`steady_sliding` with the same ``t_off``.
+
+    Parameters
+    ----------
+    V : float
+        Drag velocity, >= 0.
+    model : SlidingModel, optional
+        Default :data:`FIG6_VISCOELASTIC`.
+    spatulae : int, optional
+        Number M of simulated spatulae (default 1000); forces are scaled to the model's N.
+    duration : float, optional
+        Simulated time (default 100 cycles).
+    t_off : float, optional
+        Re-sticking time (default 0).
+    resticking : {"fixed", "exponential"}, optional
+    samples : int, optional
+        Sample times of F(t) (default 200).
+    seed : int, optional
+        Random seed (default 1); a seed gives the same result everywhere.
+
+    Returns
+    -------
+    SpatulaSimulation
+
+    Raises
+    ------
+    ValueError
+        If an argument is out of range.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> sim = gecko.simulate_spatulae(1e-4, spatulae=2000, seed=1)
+    >>> ref = gecko.steady_sliding(1e-4)
+    >>> abs(sim.mean_par / float(ref.F_par) - 1) < 1e-3
+    True
     """
     if resticking not in ("fixed", "exponential"):
         raise ValueError(f"resticking = {resticking!r} is not allowed: need 'fixed' or 'exponential'")
@@ -544,13 +988,28 @@ def simulate_spatulae(V: float, model: SlidingModel = FIG6_VISCOELASTIC, *, spat
 
 @dataclasses.dataclass(frozen=True)
 class ParametricLaw:
-    """A user detachment law ``G = func(V, **params)`` with named parameters, for
-    :func:`steady_sliding`, :func:`simulate_spatulae` and :func:`fit_steady_sliding`.
+    """A user detachment law G = func(V, **params) with named parameters.
 
-    ``func`` must accept an array of velocities (numpy-vectorised). ``positive`` names the
-    parameters that must stay positive (fitted as logarithms); default: all of them.
-    Example: ``ParametricLaw(lambda V, G0, a: G0 * (1 + a * np.log1p(V / 1e-4)), {"G0": 3e-14,
-    "a": 0.5})``.
+    Usable wherever a law is: :func:`steady_sliding`, :func:`simulate_spatulae`, and
+    :func:`fit_steady_sliding`, which fits the named parameters (those in ``positive`` as
+    logarithms, so they stay positive; derivatives by central differences).
+
+    Parameters
+    ----------
+    func : callable
+        ``func(V, **params)``, numpy-vectorised in V (an array of velocities).
+    params : dict
+        Parameter names and (starting) values.
+    positive : tuple of str, optional
+        The parameters that must stay positive; default all of them.
+
+    Examples
+    --------
+    >>> import numpy as np, gecko
+    >>> law = gecko.ParametricLaw(lambda V, G0, a: G0 * (1 + a * np.log1p(V / 1e-4)),
+    ...                           {"G0": 3e-14, "a": 0.5})
+    >>> bool(law(np.array([0.0]))[0] == 3e-14)
+    True
     """
 
     func: Callable
@@ -567,12 +1026,45 @@ class ParametricLaw:
 class SteadySlidingFit(NamedTuple):
     """Result of :func:`fit_steady_sliding`.
 
-    ``status``: "converged" (a first-order criterion holds at a finite chi**2; ``reason`` says
-    which), "not_identifiable" (converged, but the data do not determine the directions listed in
-    ``undetermined``; see the profile intervals), "max_iterations", "no_progress" or
-    "non_finite" (the fitted values or rss overflow). ``profile_lower/upper``: profile-likelihood
-    intervals (chi**2 rise ``profile_level`` quantile; NaN when not computed, +-inf where the
-    profile never rises enough).
+    Attributes
+    ----------
+    model : SlidingModel
+        The fitted model.
+    names : tuple of str
+        The free parameters.
+    values, standard_errors : numpy.ndarray
+        Their estimates and standard errors (delta method from the fit coordinates).
+    covariance : numpy.ndarray
+        Covariance of the estimates.
+    rss : float
+        Sum of squared unweighted residuals (N**2).
+    iterations : int
+        Levenberg-Marquardt iterations.
+    status : str
+        "converged" (a first-order criterion holds at a finite chi**2; ``reason`` says which),
+        "not_identifiable" (converged, but the data do not determine the directions listed in
+        ``undetermined``; see the profile intervals), "max_iterations", "no_progress" or
+        "non_finite" (the fitted values or rss overflow).
+    reason : str
+        Why the fit stopped.
+    chi2, dof, condition : float, int, float
+        Weighted chi**2, degrees of freedom, condition number of the column-scaled J^T J.
+    undetermined : tuple of str
+        Directions the data cannot determine.
+    profile_lower, profile_upper : numpy.ndarray or None
+        Profile-likelihood intervals (chi**2 rise at the ``profile_level`` quantile; NaN when not
+        computed, +-inf where the profile never rises enough).
+    sigma_known : bool
+        Whether the covariance takes sigma as known (not rescaled by the reduced chi**2).
+
+    Examples
+    --------
+    >>> import numpy as np, gecko
+    >>> V = np.logspace(-6, -2, 20)
+    >>> r = gecko.steady_sliding(V)
+    >>> fit = gecko.fit_steady_sliding(V, r.F_par, r.F_perp, fit_f_par1=False)
+    >>> fit.status, len(fit.values) == len(fit.names)
+    ('converged', True)
     """
 
     model: SlidingModel           # the fitted model
@@ -592,6 +1084,11 @@ class SteadySlidingFit(NamedTuple):
     profile_upper: Optional[np.ndarray] = None
     sigma_known: bool = False
 
+    @property
+    def status_code(self) -> "FitStatus":
+        """``status`` as a :class:`FitStatus` member (code compares these, not the text)."""
+        return FitStatus[self.status]
+
 
 def _sigma_array(s, n, name):
     a = np.asarray(s, dtype=np.float64)
@@ -605,6 +1102,7 @@ def _sigma_array(s, n, name):
         raise ValueError(f"gecko.fit_steady_sliding: {name}[{i}] = {float(a[i])!r} is out of range: need "
                          "0 < sigma < inf")
     return a
+
 
 
 def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC, *,
@@ -626,6 +1124,47 @@ def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC
     taken as known and the covariance is not rescaled; otherwise (and without sigma) it is
     rescaled by the reduced chi**2. ``profile=True`` adds profile-likelihood intervals at
     ``profile_level`` (always computed when the status is "not_identifiable").
+
+    Parameters
+    ----------
+    V, F_par, F_perp : array_like
+        Velocities and the two mean forces, same length, more data than parameters.
+    guess : SlidingModel, optional
+        Starting model; its law (viscoelastic, Eyring or a ParametricLaw) is the one fitted.
+    fit_f_par1, fit_f_perp1, fit_coupling : bool, optional
+        Free the force offsets (default True) and the coupling K[0,1] (default False).
+    max_iterations : int, optional
+        Default 200.
+    sigma : tuple of (float or array_like), optional
+        ``(sigma_par, sigma_perp)``, scalars or one per velocity.
+    absolute_sigma : bool, optional
+        Take sigma as known (default True when sigma is given).
+    profile : bool, optional
+        Compute profile-likelihood intervals.
+    profile_level : float, optional
+        Coverage of the profile intervals (default one standard deviation, 0.6827).
+    max_condition : float, optional
+        Condition number above which a direction counts as undetermined.
+
+    Returns
+    -------
+    SteadySlidingFit
+        Estimates, standard errors, covariance, rss, status and the reason it stopped.
+
+    Raises
+    ------
+    ValueError
+        If the data are not finite, of different lengths or too few, sigma is not positive, or
+        the law cannot be fitted.
+
+    Examples
+    --------
+    >>> import numpy as np, gecko
+    >>> V = np.logspace(-6, -2, 40)
+    >>> r = gecko.steady_sliding(V, gecko.FIG6_VISCOELASTIC)
+    >>> fit = gecko.fit_steady_sliding(V, r.F_par, r.F_perp, fit_f_par1=False)
+    >>> fit.status
+    'converged'
     """
     from statistics import NormalDist
 
@@ -677,7 +1216,8 @@ def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC
                                  float(guess.f_perp1), kind,
                                  float(getattr(law, "G0", 1.0)), float(getattr(law, "V_star", 1.0)),
                                  n, bool(fit_f_par1), bool(fit_f_perp1), bool(fit_coupling),
-                                 int(max_iterations), sp, sq, known, bool(profile), float(delta),
+                                 _check_count(max_iterations, "max_iterations"), sp, sq, known,
+                                 bool(profile), float(delta),
                                  float(max_condition), **custom)
     values = dict(zip(r["names"], r["values"]))
     if kind == 0:

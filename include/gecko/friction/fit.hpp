@@ -1,5 +1,6 @@
-// gecko/friction/fit.hpp — fit the steady-sliding model (eqs 9–10 of paper 000) to measured
-// (V, F_par, F_perp) by weighted least squares; beyond the paper, which fitted Fig 6 by eye.
+// gecko/friction/fit.hpp — fit the steady-sliding model (eqs 9–10 of paper 000,
+// docs/theory/frictional_adhesion.md) to measured (V, F_par, F_perp) by weighted least squares;
+// beyond the paper, which fitted Fig 6 by eye.
 //
 // Model. Only N f_par1, N f_perp1, N^2 K_par_par G(V) and rho = K_perp_par / K_par_par enter
 // eqs 9–10 (t_off = 0). The fit works in those combinations, in units of a force scale S (the
