@@ -181,3 +181,20 @@ TEST_CASE("steady_sliding: straight pillar and dragging against the curvature",
     last = a.F_perp;
   }
 }
+
+// Plastic (Eyring) law at V = 0: G(0) = 0 and f_par1 > 0 give dd = 2G/(f1 + q) ~ G/f1, so
+// t_on = dd/V -> G'(0)/f1 = G0/(V* f1) (finite), not inf; the viscoelastic G(0) = G0 > 0
+// keeps t_on = inf (a spatula never detaches without sliding).
+TEST_CASE("steady_sliding: plastic t_on at V = 0 is its limit", "[friction][steady_sliding]") {
+  const auto pl = gecko::fig6_plastic<double>();
+  const double limit = pl.law.G0 / (pl.law.V_star * pl.params.f_par1);
+  const auto r0 = gecko::steady_sliding(pl.params, pl.law, 0.0);
+  CHECK(r0.t_on == Approx(limit).epsilon(1e-15));
+  const auto r1 = gecko::steady_sliding(pl.params, pl.law, 1e-12);
+  CHECK(r1.t_on == Approx(limit).epsilon(1e-6));
+  double V[2] = {0.0, 1e-12}, Fp[2], Fq[2], dd[2], ton[2];
+  gecko::steady_sliding(pl.params, pl.law, V, 2, Fp, Fq, dd, ton);
+  CHECK(ton[0] == Approx(limit).epsilon(1e-15));
+  const auto ve = gecko::fig6_viscoelastic<double>();
+  CHECK(std::isinf(gecko::steady_sliding(ve.params, ve.law, 0.0).t_on));
+}

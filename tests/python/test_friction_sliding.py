@@ -1,4 +1,6 @@
 """gecko.friction: steady sliding (eqs 5, 6, 9, 10), presets, Python laws."""
+import pathlib
+
 import numpy as np
 import pytest
 
@@ -135,3 +137,27 @@ def test_straight_pillar_and_dragging_against_the_curvature():
                                   seed=3)
     mf = gecko.steady_sliding(1e-4, base.replace(K=((6.0, -k), (-k, 2.4))))
     assert sim.mean_perp == pytest.approx(float(mf.F_perp), rel=0.02)
+
+
+def test_fig6_viscoelastic_normal_force_changes_sign_at_27_8_um_per_s():
+    # The Fig 6 scene text: F_perp = N (f_perp1 + rho q / 2) with f_par1 = 0 vanishes where
+    # q = -2 f_perp1 / rho, i.e. G(V) = 2 f_perp1^2 / (rho^2 K_par_par): V = 27.843 um/s.
+    m = gecko.FIG6_VISCOELASTIC
+    K, Kqp, f2, law = m.K[0][0], m.K[0][1], m.f_perp1, m.law
+    G = 2 * f2 ** 2 * K / Kqp ** 2
+    V0 = law.V_star * (G / law.G0 - 1) ** (1 / law.n)
+    assert V0 == pytest.approx(27.843e-6, rel=1e-4)
+    F = gecko.steady_sliding([V0 * (1 - 1e-9), V0, V0 * (1 + 1e-9)], m).F_perp
+    assert F[0] > 0 > F[2] and abs(F[1]) < 1e-15
+    assert np.all(gecko.steady_sliding(np.logspace(-9, -2, 50), gecko.FIG6_PLASTIC).F_perp[1:] < 0)
+    text = (pathlib.Path(gecko.__file__).parent / "scene" / "figures"
+            / "friction_fig6_steady_sliding.toml").read_text()
+    assert "27.8 um/s" in text
+
+
+def test_plastic_t_on_at_rest_is_its_limit():
+    m = gecko.FIG6_PLASTIC
+    r = gecko.steady_sliding([0.0, 1e-12], m)
+    limit = m.law.G0 / (m.law.V_star * m.f_par1)
+    assert r.t_on[0] == pytest.approx(limit, rel=1e-15)
+    assert r.t_on[1] == pytest.approx(limit, rel=1e-6)
