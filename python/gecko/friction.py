@@ -45,7 +45,7 @@ __all__ = [
     "viscoelastic_detachment", "eyring_detachment", "ViscoelasticDetachment", "EyringDetachment",
     "detachment_stretch", "resonant_frequency",
     # steady sliding
-    "SlidingModel", "FIG6_VISCOELASTIC", "FIG6_PLASTIC", "steady_sliding", "SteadySliding", "FitStatus",
+    "SlidingModel", "PAPER_SPATULA", "FIG6_VISCOELASTIC", "FIG6_PLASTIC", "steady_sliding", "SteadySliding", "FitStatus",
     # beyond the paper
     "simulate_spatulae", "SpatulaSimulation", "fit_steady_sliding", "SteadySlidingFit",
     "ParametricLaw",
@@ -824,7 +824,31 @@ def _law_values(law, V_flat):
                        count=V_flat.size)
 
 
-def steady_sliding(V, model: SlidingModel = FIG6_VISCOELASTIC, *, t_off: float = 0.0,
+#: The paper's spatula for eq 4: D = 100 nm, L = 1 um, E = 1.5 GPa, rho = 1000 kg/m**3.
+PAPER_SPATULA = {"D": 1e-7, "L": 1e-6, "E": 1.5e9, "rho": 1000.0}
+
+
+def _resolve_t_off(t_off, spatula):
+    """A number, or "eq4": t_off = 1 / nu_R of eq 4 for ``spatula`` (a dict D, L, E, rho;
+    default :data:`PAPER_SPATULA`, 58.4 ns from the formula; the paper's printed 34.3 MHz would
+    give 29.2 ns)."""
+    if isinstance(t_off, str):
+        if t_off != "eq4":
+            raise ValueError(f"t_off = {t_off!r} is not allowed: need a number >= 0 or 'eq4' "
+                             "(1 / the resonant frequency of eq 4)")
+        geo = dict(PAPER_SPATULA)
+        if spatula is not None:
+            unknown = set(spatula) - set(geo)
+            if unknown:
+                raise ValueError(f"spatula has unknown keys {sorted(unknown)}: need D, L, E, rho")
+            geo.update(spatula)
+        return 1.0 / float(resonant_frequency(geo["D"], geo["L"], geo["E"], geo["rho"]))
+    if spatula is not None:
+        raise ValueError("spatula is only used with t_off='eq4'")
+    return _scalar(t_off, "t_off")
+
+
+def steady_sliding(V, model: SlidingModel = FIG6_VISCOELASTIC, *, t_off=0.0, spatula=None,
                    errors: str = "raise", forces_only: bool = False) -> SteadySliding:
     """Steady-sliding mean forces of paper 000 eqs 9-10, with a finite re-sticking time.
 
@@ -837,8 +861,11 @@ def steady_sliding(V, model: SlidingModel = FIG6_VISCOELASTIC, *, t_off: float =
         Drag velocities (any shape), >= 0.
     model : SlidingModel, optional
         Default :data:`FIG6_VISCOELASTIC`.
-    t_off : float, optional
-        Re-sticking time (default 0, the paper's limit).
+    t_off : float or "eq4", optional
+        Re-sticking time (default 0, the paper's limit); "eq4": 1 / nu_R of eq 4 for
+        ``spatula`` (a dict of D, L, E, rho; default :data:`PAPER_SPATULA`, 58.4 ns).
+    spatula : dict, optional
+        Geometry for ``t_off="eq4"``.
     errors : {"raise", "nan"}, optional
         Out-of-range input raises (default) or gives NaN.
     forces_only : bool, optional
@@ -862,6 +889,7 @@ def steady_sliding(V, model: SlidingModel = FIG6_VISCOELASTIC, *, t_off: float =
     (array([0.0349, 0.0424, 0.0586]), array([ 0.0014, -0.0026, -0.0113]))
     """
     code = _error_code(errors)
+    t_off = _resolve_t_off(t_off, spatula)
     shape, (v,) = _flat_args((V,))
     K = _matrix(model.K)
     law = model.law
@@ -926,7 +954,7 @@ class SpatulaSimulation(NamedTuple):
 
 
 def simulate_spatulae(V: float, model: SlidingModel = FIG6_VISCOELASTIC, *, spatulae: int = 1000,
-                      duration: Optional[float] = None, t_off: float = 0.0,
+                      duration: Optional[float] = None, t_off=0.0, spatula=None,
                       resticking: str = "fixed", samples: int = 200, seed: int = 1
                       ) -> SpatulaSimulation:
     """Simulate independent spatulae dragged at ``V``: a stochastic check of :func:`steady_sliding`.
@@ -945,8 +973,10 @@ def simulate_spatulae(V: float, model: SlidingModel = FIG6_VISCOELASTIC, *, spat
         Number M of simulated spatulae (default 1000); forces are scaled to the model's N.
     duration : float, optional
         Simulated time (default 100 cycles).
-    t_off : float, optional
-        Re-sticking time (default 0).
+    t_off : float or "eq4", optional
+        Re-sticking time (default 0); "eq4" as in :func:`steady_sliding`.
+    spatula : dict, optional
+        Geometry for ``t_off="eq4"``.
     resticking : {"fixed", "exponential"}, optional
     samples : int, optional
         Sample times of F(t) (default 200).
@@ -972,6 +1002,7 @@ def simulate_spatulae(V: float, model: SlidingModel = FIG6_VISCOELASTIC, *, spat
     """
     if resticking not in ("fixed", "exponential"):
         raise ValueError(f"resticking = {resticking!r} is not allowed: need 'fixed' or 'exponential'")
+    t_off = _resolve_t_off(t_off, spatula)
     V = _scalar(V, "V")
     law = model.law
     G = float(_law_values(law, np.array([max(V, 0.0)]))[0])  # V < 0 is refused in C++

@@ -161,3 +161,28 @@ def test_plastic_t_on_at_rest_is_its_limit():
     limit = m.law.G0 / (m.law.V_star * m.f_par1)
     assert r.t_on[0] == pytest.approx(limit, rel=1e-15)
     assert r.t_on[1] == pytest.approx(limit, rel=1e-6)
+
+
+def test_t_off_from_eq4():
+    # nu_R = 0.14 (D/L^2) sqrt(E/rho) = 0.14 * 1e5 * sqrt(1.5e6) = 17.146 MHz for the paper's
+    # spatula; t_off = 1/nu_R = 58.32 ns.
+    t_ref = 1.0 / (0.14 * 1e-7 / 1e-12 * np.sqrt(1.5e9 / 1000.0))
+    V = np.logspace(-6, -1, 6)
+    a = gecko.steady_sliding(V, t_off="eq4")
+    b = gecko.steady_sliding(V, t_off=t_ref)
+    np.testing.assert_allclose(a.F_par, b.F_par, rtol=1e-14)
+    # A stiffer, shorter spatula (L = 0.5 um): nu_R x 4, t_off / 4.
+    c = gecko.steady_sliding(V, t_off="eq4", spatula={"L": 0.5e-6})
+    d = gecko.steady_sliding(V, t_off=t_ref / 4)
+    np.testing.assert_allclose(c.F_par, d.F_par, rtol=1e-14)
+    # The duty factor only matters where t_on ~ t_off: at 10 cm/s it costs a few per cent.
+    assert a.F_par[-1] < gecko.steady_sliding(V[-1]).F_par
+    with pytest.raises(ValueError, match="t_off = 'eq5' is not allowed"):
+        gecko.steady_sliding(V, t_off="eq5")
+    with pytest.raises(ValueError, match="unknown keys"):
+        gecko.steady_sliding(V, t_off="eq4", spatula={"W": 1.0})
+    with pytest.raises(ValueError, match="only used with t_off='eq4'"):
+        gecko.steady_sliding(V, t_off=0.0, spatula={"L": 1e-6})
+    sim = gecko.simulate_spatulae(1e-3, t_off="eq4", spatulae=200, seed=2)
+    ref = gecko.steady_sliding(1e-3, t_off="eq4")
+    assert sim.mean_par == pytest.approx(float(ref.F_par), rel=0.01)
