@@ -47,7 +47,13 @@ def simulate_spatulae(N: float, K: _F64, f_par1: float, f_perp1: float, V: float
 def fit_steady_sliding(V: _F64, F_par: _F64, F_perp: _F64, N: float, K: _F64, f_par1: float,
                        f_perp1: float, kind: int, G0: float, V_star: float, n: float,
                        fit_f_par1: bool = True, fit_f_perp1: bool = True,
-                       fit_coupling: bool = False, max_iterations: int = 200) -> dict[str, Any]: ...
+                       fit_coupling: bool = False, max_iterations: int = 200,
+                       sigma_par: Optional[_F64] = None, sigma_perp: Optional[_F64] = None,
+                       absolute_sigma: bool = True, profile: bool = False,
+                       profile_delta: float = 1.0, max_condition: float = 1e10,
+                       custom_G: Optional[Callable[[_F64, _F64], Any]] = None,
+                       custom_names: list[str] = ..., custom_values: list[float] = ...,
+                       custom_positive: list[bool] = ...) -> dict[str, Any]: ...
 
 # ---- seta (src/bindings/seta.cpp) ------------------------------------------------------------
 # A design is 9 float64: EI1, EI2, EA1, EA2, l1, l2, alpha1, alpha2, w. Column dicts hold float64

@@ -45,7 +45,7 @@ __all__ = [
     "viscoelastic_detachment", "eyring_detachment", "ViscoelasticDetachment", "EyringDetachment",
     "detachment_stretch", "resonant_frequency",
     # steady sliding
-    "SlidingModel", "FIG6_VISCOELASTIC", "FIG6_PLASTIC", "steady_sliding", "SteadySliding", "FitStatus",
+    "SlidingModel", "PAPER_SPATULA", "FIG6_VISCOELASTIC", "FIG6_PLASTIC", "steady_sliding", "SteadySliding", "FitStatus",
     # beyond the paper
     "simulate_spatulae", "SpatulaSimulation", "fit_steady_sliding", "SteadySlidingFit",
     "ParametricLaw",
@@ -67,36 +67,194 @@ def _scalar(x, name: str) -> float:
 
 # ---- curved beam (docs/theory/frictional_adhesion.md, Appendix 1) ------------------------------------------------
 
-def castigliano_compliance(z: Callable, dzdx: Optional[Callable] = None, *, L: float = 1.0,
-                           EI: float = 1.0, EA: float = np.inf, tol: float = 0.0,
-                           max_levels: int = 9, report: bool = False):
-    """Tip compliance C (2x2) of a planar curved beam with centreline ``z(x)``, 0 <= x <= L.
+_MAX_LEVELS = 9          # tanh-sinh levels of the C++ table (graphs z(x))
+_CURVE_MAX_LEVELS = 12   # levels of the numpy tanh-sinh for parametric curves
+
+
+def _complex_step_lost(f, points, scale):
+    """True if ``Im f(p + i h) / h`` disagrees with a central difference at ``points``: the
+    callable drops the imaginary part (abs, np.real, a spline...), so the complex-step slope
+    would silently be wrong."""
+    h = 1e-30
+    try:
+        with np.errstate(all="ignore"):
+            cs = np.imag(np.asarray(f(points + 1j * h), dtype=np.complex128)) / h
+    except (TypeError, ValueError):
+        return None   # refuses complex arguments: no silent loss, the caller decides
+    d = 1e-6 * scale
+    with np.errstate(all="ignore"):
+        fd = (np.asarray(f(points + d), dtype=np.float64)
+              - np.asarray(f(points - d), dtype=np.float64)) / (2 * d)
+    if not (np.all(np.isfinite(cs)) and np.all(np.isfinite(fd))):
+        return True
+    return bool(np.any(np.abs(cs - fd) > 1e-5 * (np.abs(fd) + 1.0)))
+
+
+def _fd_derivative(f, scale):
+    """Five-point central difference (error ~ (h/scale)**4 + eps scale/h, about 1e-12)."""
+    h = scale * np.finfo(float).eps ** 0.2
+
+    def df(x):
+        x = np.asarray(x, dtype=np.float64)
+        return (8 * (np.asarray(f(x + h), float) - np.asarray(f(x - h), float))
+                - (np.asarray(f(x + 2 * h), float) - np.asarray(f(x - 2 * h), float))) / (12 * h)
+    return df
+
+
+def _lost_warning(name):
+    import warnings
+    warnings.warn(f"gecko.castigliano_compliance: {name} drops the imaginary part of a complex "
+                  "argument (abs, np.real, a spline, ...), so its complex-step derivative would be "
+                  "wrong; using a five-point finite difference instead (relative accuracy about "
+                  "1e-11). Pass the derivative explicitly to avoid this.", RuntimeWarning,
+                  stacklevel=3)
+
+
+def _tanh_sinh_nodes(level):
+    """Nodes t in (0, 1), their complements 1 - t and weights dt/du of tanh-sinh level ``level``
+    (level 0: u integer; level k: the odd multiples of 2**-k), dropping nodes where t or 1 - t
+    rounds to 0."""
+    h = 2.0 ** -level
+    j = np.arange(0 if level == 0 else 1, int(4.0 / h) + 1, 1 if level == 0 else 2)
+    u = j * h
+    u = np.concatenate([-u[u > 0][::-1], u]) if level else np.concatenate([-u[1:][::-1], u])
+    s = np.pi * np.sinh(u)
+    with np.errstate(over="ignore"):
+        t = 1.0 / (1.0 + np.exp(-s))
+        c = 1.0 / (1.0 + np.exp(s))   # 1 - t, accurate near t = 1
+        w = np.pi * np.cosh(u) * t * c
+    keep = (t > 1e-300) & (c > 0) & (t < 1.0) & (w > 0)
+    return t[keep], w[keep]
+
+
+def _curve_compliance(curve, EI, EA, tol, max_levels, derivatives):
+    """Compliance of a parametric centreline (x(t), z(t)), tip at t = 0, clamp at t = 1."""
+    xs, zs = curve
+    if callable(xs) != callable(zs):
+        raise ValueError("curve must be two callables of t or two arrays of sampled points")
+    if not callable(xs):
+        x = np.asarray(xs, dtype=np.float64)
+        z = np.asarray(zs, dtype=np.float64)
+        if x.ndim != 1 or x.shape != z.shape or x.size < 4:
+            raise ValueError("curve: sampled x and z must be 1-D arrays of equal length >= 4, got "
+                             f"shapes {x.shape} and {z.shape}")
+        if not (np.all(np.isfinite(x)) and np.all(np.isfinite(z))):
+            raise ValueError("curve: sampled points must be finite")
+        chord = np.concatenate([[0.0], np.cumsum(np.hypot(np.diff(x), np.diff(z)))])
+        if not np.all(np.diff(chord) > 0):
+            i = int(np.flatnonzero(~(np.diff(chord) > 0))[0])
+            raise ValueError(f"curve: points {i} and {i + 1} coincide")
+        from scipy.interpolate import CubicSpline  # optional dependency, only for sampled curves
+        tt = chord / chord[-1]
+        sx, sz = CubicSpline(tt, x), CubicSpline(tt, z)
+        fx, fz, dx, dz = sx, sz, sx.derivative(), sz.derivative()
+    else:
+        fx, fz = xs, zs
+        dx, dz = derivatives if derivatives is not None else (None, None)
+        probe = np.array([0.173, 0.5, 0.827])
+        def derivative(f, d, name):
+            if d is not None:
+                return d
+            if _complex_step_lost(f, probe, 1.0) is not False:   # lost, or refuses complex
+                _lost_warning(name)
+                return _fd_derivative(f, 1.0)
+            return lambda t: np.imag(np.asarray(f(t + 1e-30j), np.complex128)) / 1e-30
+        dx = derivative(fx, dx, "curve x(t)")
+        dz = derivative(fz, dz, "curve z(t)")
+
+    def vec(f, t, what):
+        with np.errstate(all="ignore"):
+            v = np.asarray(f(t), dtype=np.float64)
+        if v.shape != t.shape:
+            v = np.broadcast_to(v, t.shape) if v.shape == () else None
+        if v is None:
+            raise ValueError(f"curve: {what} must be numpy-vectorised (one value per t)")
+        return v
+
+    x0 = float(vec(fx, np.zeros(1), "x(t)")[0])
+    z0 = float(vec(fz, np.zeros(1), "z(t)")[0])
+    if not (np.isfinite(x0) and np.isfinite(z0)):
+        raise ValueError(f"curve: the tip (x(0), z(0)) = ({x0}, {z0}) must be finite")
+
+    def integral(level):
+        t, w = _tanh_sinh_nodes(level)
+        X, Z = vec(fx, t, "x(t)") - x0, vec(fz, t, "z(t)") - z0
+        DX, DZ = vec(dx, t, "dx/dt"), vec(dz, t, "dz/dt")
+        bad = ~(np.isfinite(X) & np.isfinite(Z) & np.isfinite(DX) & np.isfinite(DZ))
+        if np.any(bad):
+            raise ValueError(f"curve: not finite at t = {float(t[bad][0])!r}; need a finite "
+                             "centreline and tangent for 0 < t < 1")
+        ds = np.hypot(DX, DZ)
+        wb = w * ds / EI
+        c = np.array([np.sum(wb * Z * Z), np.sum(wb * Z * X), np.sum(wb * X * X)])
+        if np.isfinite(EA):
+            with np.errstate(invalid="ignore", divide="ignore"):
+                wa = np.where(ds > 0, w / (EA * ds), 0.0)
+            c += np.array([np.sum(wa * DX * DX), -np.sum(wa * DX * DZ), np.sum(wa * DZ * DZ)])
+        return c, t.size
+
+    tol = tol if tol > 0 else np.finfo(float).eps ** (2 / 3)
+    total, evals = integral(0)
+    prev = total
+    err, level, converged = np.inf, 0, False
+    for level in range(1, max_levels + 1):
+        c, m = integral(level)
+        evals += m
+        cur = total / 2 + c * 2.0 ** -level   # the new level halves the step
+        err = float(np.max(np.abs(cur - prev)))
+        total, prev = cur, cur
+        if level >= 3 and err <= tol * float(np.max(np.abs(cur))):
+            converged = True
+            break
+    total = total * 1.0
+    C = np.array([[total[0], total[1]], [total[1], total[2]]])
+    info = {"error_estimate": err, "levels": level, "evaluations": int(evals),
+            "converged": converged}
+    if not converged:
+        raise RuntimeError("gecko.castigliano_compliance: tanh-sinh quadrature of the curve did "
+                           f"not converge (error estimate {err:.3g}); is it smooth on (0, 1)?")
+    return C, info
+
+
+def castigliano_compliance(z: Optional[Callable] = None, dzdx: Optional[Callable] = None, *,
+                           L: float = 1.0, EI: float = 1.0, EA: float = np.inf, tol: float = 0.0,
+                           max_levels: Optional[int] = None, report: bool = False, curve=None,
+                           curve_derivatives=None):
+    """Tip compliance C (2x2) of a planar curved beam, D = C F; :func:`rigidity` gives K.
 
     Castigliano's theorem on the bending energy (paper 000 Appendix 1, eq A1.1:
-    M = -(z - z(0)) F_par - x F_perp), plus the axial energy for a finite ``EA``; D = C F, and
-    :func:`rigidity` gives K = C^-1. The tip is at x = 0, the clamp at x = L. Tanh-sinh quadrature
-    after x = L t^2 copes with a tip where ds/dx ~ x^-1/2.
+    M = -(z - z_tip) F_par - (x - x_tip) F_perp), plus the axial energy F_par t_x - F_perp t_z
+    for a finite ``EA``. Tanh-sinh quadrature; for graphs after x = L t^2 (3 - 2t), which copes
+    with a tip where ds/dx ~ x^-1/2 and with a vertical tangent at the clamp.
 
     Parameters
     ----------
-    z : callable
-        The centreline, a Python function of one float.
+    z : callable, optional
+        A graph z(x), 0 <= x <= L, tip at x = 0, clamp at x = L: a Python function of one float.
     dzdx : callable, optional
-        Its slope; default the complex step Im z(x + ih)/h (exact to rounding; ``z`` must then
-        accept complex numbers, e.g. be written with numpy functions).
+        Its slope; default the complex step Im z(x + ih)/h (exact to rounding). A ``z`` that
+        drops the imaginary part (abs, np.real, a spline) is detected at three probe points: a
+        ``RuntimeWarning``, and a five-point finite difference (accuracy ~1e-11) replaces it.
     L : float, optional
-        Horizontal extent (default 1).
+        Horizontal extent of a graph (default 1).
     EI : float, optional
         Bending stiffness (default 1).
     EA : float, optional
         Axial stiffness (default inf: bending only).
     tol : float, optional
-        Step between two quadrature levels that ends the refinement (0: eps^(2/3)); the result is
-        then accurate to a few eps.
+        Step between two quadrature levels that ends the refinement (0: eps^(2/3)).
     max_levels : int, optional
-        Maximum number of tanh-sinh levels (default 9).
+        Maximum tanh-sinh levels: 3..9 for graphs (default 9), 3..12 for curves (default 12);
+        out of range is an error.
     report : bool, optional
         Also return a dict with the error estimate, levels and evaluations.
+    curve : pair, optional
+        A parametric centreline (x, z), tip at t = 0, clamp at t = 1: two numpy-vectorised
+        callables of t (derivatives by the complex step, checked as for ``z``), or two arrays
+        of sampled points interpolated by cubic splines in the normalised chord length (needs
+        scipy). Any shape: vertical pillars, hooks, S-shapes. ``L`` is not used.
+    curve_derivatives : pair of callables, optional
+        (dx/dt, dz/dt) for a callable ``curve``.
 
     Returns
     -------
@@ -105,7 +263,7 @@ def castigliano_compliance(z: Callable, dzdx: Optional[Callable] = None, *, L: f
     Raises
     ------
     ValueError
-        If L, EI or EA is out of range, or the energy integrals are not finite.
+        If L, EI, EA, tol or max_levels is out of range, or the energy integrals are not finite.
 
     Examples
     --------
@@ -113,9 +271,48 @@ def castigliano_compliance(z: Callable, dzdx: Optional[Callable] = None, *, L: f
     >>> C = gecko.castigliano_compliance(lambda x: np.sqrt(x) / 2, L=1.0)
     >>> np.allclose(C, gecko.parabolic_beam_compliance(1.0, 1.0), rtol=1e-13)
     True
+    >>> hook = gecko.castigliano_compliance(curve=(lambda t: np.sin(np.pi * t),
+    ...                                            lambda t: 1 - np.cos(np.pi * t)))
+    >>> np.allclose(hook, [[1.5 * np.pi, 2.0], [2.0, 0.5 * np.pi]], rtol=1e-14)
+    True
     """
-    C, info = _core.castigliano_compliance(z, dzdx, _scalar(L, "L"), _scalar(EI, "EI"),
-                                           _scalar(EA, "EA"), float(tol), int(max_levels))
+    EI_, EA_ = _scalar(EI, "EI"), _scalar(EA, "EA")
+    tol = _scalar(tol, "tol")
+    if not (tol >= 0) or not np.isfinite(tol):
+        raise ValueError(f"tol = {tol!r} is out of range: need 0 <= tol < inf (0: default)")
+    limit = _CURVE_MAX_LEVELS if curve is not None else _MAX_LEVELS
+    levels = limit if max_levels is None else max_levels
+    if isinstance(levels, bool) or int(levels) != levels or not (3 <= int(levels) <= limit):
+        raise ValueError(f"max_levels = {max_levels!r} is out of range: need an integer "
+                         f"3 <= max_levels <= {limit}")
+    levels = int(levels)
+    if curve is not None:
+        if z is not None or dzdx is not None:
+            raise ValueError("give either z (a graph z(x)) or curve=(x, z), not both")
+        if not (isinstance(curve, (tuple, list)) and len(curve) == 2):
+            raise ValueError("curve must be a pair (x, z) of callables of t or of sampled arrays")
+        if not (EI_ > 0 and np.isfinite(EI_)):
+            raise ValueError(f"gecko::castigliano_compliance: EI = {EI_!r} is out of range: "
+                             "need 0 < EI < inf")
+        if not EA_ > 0:
+            raise ValueError(f"gecko::castigliano_compliance: EA = {EA_!r} is out of range: "
+                             "need EA > 0 (inf: no axial term)")
+        C, info = _curve_compliance(curve, EI_, EA_, tol, levels, curve_derivatives)
+        return (C, info) if report else C
+    if z is None or not callable(z):
+        raise ValueError("z must be a callable z(x) (or pass curve=(x, z))")
+    L_ = _scalar(L, "L")
+    if dzdx is None and L_ > 0 and np.isfinite(L_):
+        probe = L_ * np.array([0.173, 0.5, 0.827])
+        zz = lambda x: np.array([complex(z(complex(v))) if np.iscomplexobj(x) else float(z(v))
+                                 for v in np.atleast_1d(x)])
+        # None (z refuses complex): the C++ slope raises a clear error naming dzdx.
+        if _complex_step_lost(zz, probe, L_) is True:
+            _lost_warning("z")
+            fd = _fd_derivative(lambda x: np.array([float(z(float(v))) for v in np.atleast_1d(x)]),
+                                L_)
+            dzdx = lambda x: float(fd(np.array([x]))[0])
+    C, info = _core.castigliano_compliance(z, dzdx, L_, EI_, EA_, float(tol), levels)
     return (C, info) if report else C
 
 
@@ -542,6 +739,9 @@ def resonant_frequency(D, L, E, rho, *, errors: str = "raise"):
 class SlidingModel:
     """N spatulae of rigidity K that re-stick with forces (f_par1, f_perp1) and detach at law(V).
 
+    K is symmetric positive definite: K[0,1] < 0 the paper's curved beam, K[0,1] = 0 a straight
+    pillar, K[0,1] > 0 a beam dragged against its curvature (regular friction).
+
     Parameters
     ----------
     N : float
@@ -624,7 +824,31 @@ def _law_values(law, V_flat):
                        count=V_flat.size)
 
 
-def steady_sliding(V, model: SlidingModel = FIG6_VISCOELASTIC, *, t_off: float = 0.0,
+#: The paper's spatula for eq 4: D = 100 nm, L = 1 um, E = 1.5 GPa, rho = 1000 kg/m**3.
+PAPER_SPATULA = {"D": 1e-7, "L": 1e-6, "E": 1.5e9, "rho": 1000.0}
+
+
+def _resolve_t_off(t_off, spatula):
+    """A number, or "eq4": t_off = 1 / nu_R of eq 4 for ``spatula`` (a dict D, L, E, rho;
+    default :data:`PAPER_SPATULA`, 58.4 ns from the formula; the paper's printed 34.3 MHz would
+    give 29.2 ns)."""
+    if isinstance(t_off, str):
+        if t_off != "eq4":
+            raise ValueError(f"t_off = {t_off!r} is not allowed: need a number >= 0 or 'eq4' "
+                             "(1 / the resonant frequency of eq 4)")
+        geo = dict(PAPER_SPATULA)
+        if spatula is not None:
+            unknown = set(spatula) - set(geo)
+            if unknown:
+                raise ValueError(f"spatula has unknown keys {sorted(unknown)}: need D, L, E, rho")
+            geo.update(spatula)
+        return 1.0 / float(resonant_frequency(geo["D"], geo["L"], geo["E"], geo["rho"]))
+    if spatula is not None:
+        raise ValueError("spatula is only used with t_off='eq4'")
+    return _scalar(t_off, "t_off")
+
+
+def steady_sliding(V, model: SlidingModel = FIG6_VISCOELASTIC, *, t_off=0.0, spatula=None,
                    errors: str = "raise", forces_only: bool = False) -> SteadySliding:
     """Steady-sliding mean forces of paper 000 eqs 9-10, with a finite re-sticking time.
 
@@ -637,8 +861,11 @@ def steady_sliding(V, model: SlidingModel = FIG6_VISCOELASTIC, *, t_off: float =
         Drag velocities (any shape), >= 0.
     model : SlidingModel, optional
         Default :data:`FIG6_VISCOELASTIC`.
-    t_off : float, optional
-        Re-sticking time (default 0, the paper's limit).
+    t_off : float or "eq4", optional
+        Re-sticking time (default 0, the paper's limit); "eq4": 1 / nu_R of eq 4 for
+        ``spatula`` (a dict of D, L, E, rho; default :data:`PAPER_SPATULA`, 58.4 ns).
+    spatula : dict, optional
+        Geometry for ``t_off="eq4"``.
     errors : {"raise", "nan"}, optional
         Out-of-range input raises (default) or gives NaN.
     forces_only : bool, optional
@@ -662,6 +889,7 @@ def steady_sliding(V, model: SlidingModel = FIG6_VISCOELASTIC, *, t_off: float =
     (array([0.0349, 0.0424, 0.0586]), array([ 0.0014, -0.0026, -0.0113]))
     """
     code = _error_code(errors)
+    t_off = _resolve_t_off(t_off, spatula)
     shape, (v,) = _flat_args((V,))
     K = _matrix(model.K)
     law = model.law
@@ -726,7 +954,7 @@ class SpatulaSimulation(NamedTuple):
 
 
 def simulate_spatulae(V: float, model: SlidingModel = FIG6_VISCOELASTIC, *, spatulae: int = 1000,
-                      duration: Optional[float] = None, t_off: float = 0.0,
+                      duration: Optional[float] = None, t_off=0.0, spatula=None,
                       resticking: str = "fixed", samples: int = 200, seed: int = 1
                       ) -> SpatulaSimulation:
     """Simulate independent spatulae dragged at ``V``: a stochastic check of :func:`steady_sliding`.
@@ -745,8 +973,10 @@ def simulate_spatulae(V: float, model: SlidingModel = FIG6_VISCOELASTIC, *, spat
         Number M of simulated spatulae (default 1000); forces are scaled to the model's N.
     duration : float, optional
         Simulated time (default 100 cycles).
-    t_off : float, optional
-        Re-sticking time (default 0).
+    t_off : float or "eq4", optional
+        Re-sticking time (default 0); "eq4" as in :func:`steady_sliding`.
+    spatula : dict, optional
+        Geometry for ``t_off="eq4"``.
     resticking : {"fixed", "exponential"}, optional
     samples : int, optional
         Sample times of F(t) (default 200).
@@ -772,6 +1002,7 @@ def simulate_spatulae(V: float, model: SlidingModel = FIG6_VISCOELASTIC, *, spat
     """
     if resticking not in ("fixed", "exponential"):
         raise ValueError(f"resticking = {resticking!r} is not allowed: need 'fixed' or 'exponential'")
+    t_off = _resolve_t_off(t_off, spatula)
     V = _scalar(V, "V")
     law = model.law
     G = float(_law_values(law, np.array([max(V, 0.0)]))[0])  # V < 0 is refused in C++
@@ -903,6 +1134,7 @@ def _sigma_array(s, n, name):
         raise ValueError(f"gecko.fit_steady_sliding: {name}[{i}] = {float(a[i])!r} is out of range: need "
                          "0 < sigma < inf")
     return a
+
 
 
 def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC, *,

@@ -161,3 +161,37 @@ TEST_CASE("castigliano_compliance says when the quadrature does not converge",
                                                gecko::policies::nan_policy());
   CHECK(std::isnan(C(0, 1)));
 }
+
+// Quarter circle of radius R as a graph with a vertical tangent at the clamp,
+// z = R - sqrt(R^2 - x^2), 0 <= x <= R: with x = R sin p, z = R (1 - cos p), ds = R dp,
+// C = R^3 [[int (1 - cos p)^2, int (1 - cos p) sin p], [., int sin^2 p]] over [0, pi/2]
+//   = R^3 [[3 pi/4 - 2, 1/2], [1/2, pi/4]] (EI = 1). Converges at the default tolerance.
+TEST_CASE("quarter circle graph with a vertical tangent at the clamp", "[beam][castigliano]") {
+  const double R = 0.7, pi = 3.141592653589793;
+  gecko::quadrature_report<double> rep;
+  gecko::quadrature_options<double> opt;
+  opt.report = &rep;
+  const auto C = gecko::castigliano_compliance(
+      [R](auto x) { using std::sqrt; return R - sqrt(R * R - x * x); },
+      gecko::curved_beam<double>{R, 1.0}, opt);
+  CHECK(rep.converged);
+  const double R3 = R * R * R;
+  CHECK(C(0, 0) == Approx(R3 * (3 * pi / 4 - 2)).epsilon(2e-12));
+  CHECK(C(0, 1) == Approx(R3 / 2).epsilon(2e-12));
+  CHECK(C(1, 1) == Approx(R3 * pi / 4).epsilon(2e-12));
+}
+
+TEST_CASE("castigliano_compliance refuses out-of-range options", "[beam][castigliano][errors]") {
+  gecko::quadrature_options<double> opt;
+  opt.max_levels = 10;
+  const auto line = [](auto x) { return x; };
+  CHECK_THROWS_WITH(gecko::castigliano_compliance(line, gecko::curved_beam<double>{}, opt),
+                    Catch::Contains("max_levels = 10"));
+  opt.max_levels = 0;
+  CHECK_THROWS_WITH(gecko::castigliano_compliance(line, gecko::curved_beam<double>{}, opt),
+                    Catch::Contains("max_levels = 0"));
+  opt.max_levels = 9;
+  opt.tol = -1;
+  CHECK_THROWS_WITH(gecko::castigliano_compliance(line, gecko::curved_beam<double>{}, opt),
+                    Catch::Contains("tol = -1"));
+}

@@ -148,8 +148,8 @@ TEST_CASE("simulate_spatulae: bad input", "[friction][simulation][errors]") {
   CHECK_THROWS_WITH(gecko::simulate_spatulae(s.p, s.law, s.V, o), Catch::Contains("duration = 1000000000000"));
   o.duration = 1;
   auto p = s.p;
-  p.K(0, 1) = p.K(1, 0) = 1.0;
-  CHECK_THROWS_WITH(gecko::simulate_spatulae(p, s.law, s.V, o), Catch::Contains("K = 1"));
+  p.K(0, 1) = p.K(1, 0) = 100.0;  // not positive definite (K_par_perp >= 0 alone is allowed)
+  CHECK_THROWS_WITH(gecko::simulate_spatulae(p, s.law, s.V, o), Catch::Contains("positive definite"));
   CHECK_THROWS_WITH(gecko::simulate_spatulae(s.p, [](double) { return 0.0; }, s.V, o),
                     Catch::Contains("G = 0"));
   CHECK(std::isnan(gecko::simulate_spatulae(s.p, s.law, -1.0, o, gecko::policies::nan_policy()).mean_par));

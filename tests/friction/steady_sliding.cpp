@@ -119,8 +119,8 @@ TEST_CASE("steady_sliding takes any callable law, and a batch", "[friction][stea
 TEST_CASE("steady_sliding: bad input names the argument", "[friction][steady_sliding][errors]") {
   auto ve = gecko::fig6_viscoelastic<double>();
   auto p = ve.params;
-  p.K(0, 1) = p.K(1, 0) = 0.5;
-  CHECK_THROWS_WITH(gecko::steady_sliding(p, ve.law, 1e-4), Catch::Contains("K = 0.5") && Catch::Contains("< 0"));
+  p.K(0, 1) = p.K(1, 0) = 5.0;  // K_par_perp >= 0 is allowed, but K must be positive definite
+  CHECK_THROWS_WITH(gecko::steady_sliding(p, ve.law, 1e-4), Catch::Contains("positive definite"));
   p = ve.params;
   p.K(0, 1) = -3.0;  // non-symmetric
   CHECK_THROWS_WITH(gecko::steady_sliding(p, ve.law, 1e-4), Catch::Contains("symmetric"));
@@ -157,4 +157,44 @@ TEMPLATE_TEST_CASE("steady_sliding in every scalar type", "[friction][steady_sli
   const auto b = gecko::steady_sliding(pl.params, pl.law, T(V));
   CHECK(std::abs(b.F_par / (0.03L * (1 + h)) - 1) <= 16 * eps);
   CHECK(std::abs(b.F_perp / (-0.025L * (h - 1)) - 1) <= 64 * eps);
+}
+
+// K_par_perp >= 0 (issue 14): eq 9 does not involve K_perp_par; eq 10 is linear in it, so the
+// straight pillar (0) keeps F_perp = N f_perp1 and the mirror image (dragging against the
+// curvature, +K_perp_par) gives F_perp(+k) + F_perp(-k) = 2 N f_perp1, compressive and growing.
+TEST_CASE("steady_sliding: straight pillar and dragging against the curvature",
+          "[friction][steady_sliding]") {
+  const auto ve = gecko::fig6_viscoelastic<double>();
+  auto pillar = ve.params, against = ve.params;
+  pillar.K(0, 1) = pillar.K(1, 0) = 0.0;
+  against.K(0, 1) = against.K(1, 0) = -ve.params.K(0, 1);
+  double last = 0;
+  for (double V : {1e-7, 1e-6, 1e-5, 1e-4, 1e-3, 1e-2}) {
+    const auto c = gecko::steady_sliding(ve.params, ve.law, V);
+    const auto s = gecko::steady_sliding(pillar, ve.law, V);
+    const auto a = gecko::steady_sliding(against, ve.law, V);
+    CHECK(s.F_par == c.F_par);
+    CHECK(a.F_par == c.F_par);
+    CHECK(s.F_perp == Approx(ve.params.N * ve.params.f_perp1).epsilon(1e-15));
+    CHECK(a.F_perp + c.F_perp == Approx(2 * ve.params.N * ve.params.f_perp1).epsilon(1e-13));
+    CHECK(a.F_perp > last);
+    last = a.F_perp;
+  }
+}
+
+// Plastic (Eyring) law at V = 0: G(0) = 0 and f_par1 > 0 give dd = 2G/(f1 + q) ~ G/f1, so
+// t_on = dd/V -> G'(0)/f1 = G0/(V* f1) (finite), not inf; the viscoelastic G(0) = G0 > 0
+// keeps t_on = inf (a spatula never detaches without sliding).
+TEST_CASE("steady_sliding: plastic t_on at V = 0 is its limit", "[friction][steady_sliding]") {
+  const auto pl = gecko::fig6_plastic<double>();
+  const double limit = pl.law.G0 / (pl.law.V_star * pl.params.f_par1);
+  const auto r0 = gecko::steady_sliding(pl.params, pl.law, 0.0);
+  CHECK(r0.t_on == Approx(limit).epsilon(1e-15));
+  const auto r1 = gecko::steady_sliding(pl.params, pl.law, 1e-12);
+  CHECK(r1.t_on == Approx(limit).epsilon(1e-6));
+  double V[2] = {0.0, 1e-12}, Fp[2], Fq[2], dd[2], ton[2];
+  gecko::steady_sliding(pl.params, pl.law, V, 2, Fp, Fq, dd, ton);
+  CHECK(ton[0] == Approx(limit).epsilon(1e-15));
+  const auto ve = gecko::fig6_viscoelastic<double>();
+  CHECK(std::isinf(gecko::steady_sliding(ve.params, ve.law, 0.0).t_on));
 }

@@ -104,6 +104,7 @@ def test_fit_overflowing_data_is_not_converged():
     V, Fp, Fq = data25(gecko.FIG6_VISCOELASTIC, 0.0, 0.0, 1)
     fit = gecko.fit_steady_sliding(V, 1e200 * Fp, 1e200 * Fq)
     assert fit.status == "non_finite" and "overflow" in fit.reason
+    assert fit.status_code == gecko.FitStatus.non_finite
 
 
 def test_fit_not_identifiable_reports_directions_and_profiles():

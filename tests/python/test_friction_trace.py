@@ -34,3 +34,16 @@ def test_trace_bad_input():
         gecko.force_trace(times=[3.0])
     with pytest.raises(ValueError, match="2x2"):
         gecko.force_trace(np.eye(3))
+
+
+def test_trace_straight_pillar_and_against_the_curvature():
+    # Fig 4 path: load (0,0)->(0,1), drag (0,1)->(3,1). f_perp = K_perp_par d_par + K_perp_perp
+    # d_perp: with K_perp_par = 0 (straight pillar) it stays at the load, with K_perp_par > 0
+    # (dragged against the curvature) it grows compressive during the drag; with the paper's
+    # K_perp_par = -3 it turns tensile (-7).
+    for kpq, end in ((0.0, 2.0), (3.0, 11.0), (-3.0, -7.0)):
+        tr = gecko.force_trace(((5.0, kpq), (kpq, 2.0)))
+        assert tr.f_perp[-1] == pytest.approx(end, abs=1e-14)
+        drag = tr.t >= 0.5
+        if kpq >= 0:
+            assert np.all(tr.f_perp[drag] >= 2.0 - 1e-14)

@@ -8,11 +8,13 @@
 // convention: it makes the straight inclined beam bend only under the force normal to it),
 //     U = (1/2EI) int M^2 ds + (1/2EA) int N^2 ds,   D = dU/dF = C F,
 //     C_ij = (1/EI) int m_i m_j ds + (1/EA) int a_i a_j ds,   m = (z - z(0), x),  a = (t_x, -t_z).
-// With ds = sqrt(1 + z'^2) dx and the substitution x = L t^2 (dx = 2 L t dt) the integrands
-//     bending: m_i m_j * hypot(1, z') * 2 L t,
-//     axial:   (1, -z')_i (1, -z')_j / hypot(1, z') * 2 L t
-// are smooth in t for a tip with z' ~ x^-1/2 (the parabola); tanh-sinh (tanh_sinh.hpp) then
-// integrates them, and copes with other integrable endpoint behaviour too.
+// With ds = sqrt(1 + z'^2) dx and the substitution x = L t^2 (3 - 2t) (dx = 6 L t (1 - t) dt)
+// the integrands
+//     bending: m_i m_j * hypot(1, z') * 6 L t (1 - t),
+//     axial:   (1, -z')_i (1, -z')_j / hypot(1, z') * 6 L t (1 - t)
+// are smooth in t for a tip with z' ~ x^-1/2 (the parabola) and for a vertical tangent at the
+// clamp, z' ~ (L - x)^-1/2 (a quarter circle); tanh-sinh (tanh_sinh.hpp) then integrates
+// them, and copes with other integrable endpoint behaviour too.
 #pragma once
 
 #include <Eigen/Core>
@@ -88,8 +90,12 @@ Eigen::Matrix<T, 2, 2> castigliano_compliance_imp(const Shape& shape, const curv
   }
   bool bad = false;
   T bad_value = T(0);
-  auto integrand = [&](T t) -> V3 {
-    const T x = L * t * t;
+  auto raw = [&](T t) -> V3 {
+    // x = L t^2 (3 - 2t): dx/dt = 6 L t (1 - t) vanishes at both ends, like sqrt(x) at the tip
+    // and sqrt(L - x) at the clamp, so a slope singular as x^-1/2 (the parabola's tip) or
+    // (L - x)^-1/2 (a vertical tangent at the clamp) leaves a smooth integrand in t.
+    const T xt = L * t * t * (T(3) - T(2) * t);
+    const T x = xt < L ? xt : L;  // rounding must not step past the clamp
     const T z = static_cast<T>(shape(x)) - z0;
     const T dz = detail::shape_slope<T>(shape, x);
     if (!isfinite(z) || !isfinite(dz)) {
@@ -98,7 +104,7 @@ Eigen::Matrix<T, 2, 2> castigliano_compliance_imp(const Shape& shape, const curv
       return V3::Zero();
     }
     const T ds_dx = hypot(T(1), dz);
-    const T jac = T(2) * L * t;  // dx/dt
+    const T jac = T(6) * L * t * (T(1) - t);  // dx/dt
     const T wb = inv_EI * ds_dx * jac;
     V3 c(wb * z * z, wb * z * x, wb * x * x);
     if constexpr (Axial) {
@@ -107,6 +113,33 @@ Eigen::Matrix<T, 2, 2> castigliano_compliance_imp(const Shape& shape, const curv
       c += V3(wa, -wa * dz, wa * dz * dz);
     }
     return c;
+  };
+  // A vertical tangent at the clamp: the slope there is computed from x, which does not resolve
+  // L - x ~ 3 L (1 - t)^2 (relative error eps / (3 (1 - t)^2)). The integrand is smooth in t,
+  // so for 1 - t < dc = 2e-4 it is extrapolated quadratically from three points at dc, 2dc,
+  // 3dc: error ~ dc^3 * dc from the extrapolation, eps / (3 dc) from the rounding above dc.
+  const T dc = T(2e-4);
+  bool vertical = false;
+  {
+    using std::abs;
+    const T xv = L * (T(1) - T(1e-8));
+    const T sv = detail::shape_slope<T>(shape, xv);
+    vertical = !isfinite(sv) || abs(sv) > T(1e3);
+  }
+  V3 g1 = V3::Zero(), g2 = V3::Zero(), g3 = V3::Zero();
+  if (vertical) {
+    g1 = raw(T(1) - dc);
+    g2 = raw(T(1) - T(2) * dc);
+    g3 = raw(T(1) - T(3) * dc);
+  }
+  auto integrand = [&](T t) -> V3 {
+    const T delta = T(1) - t;
+    if (!vertical || delta >= dc) return raw(t);
+    // Lagrange through delta = dc, 2dc, 3dc, evaluated at s = delta / dc.
+    const T s = delta / dc;
+    const T l1 = (s - T(2)) * (s - T(3)) / T(2), l2 = -(s - T(1)) * (s - T(3)),
+            l3 = (s - T(1)) * (s - T(2)) / T(2);
+    return l1 * g1 + l2 * g2 + l3 * g3;
   };
   const T tol = opts.tol > T(0) ? opts.tol
                                 : T(pow(std::numeric_limits<T>::epsilon(), T(2) / T(3)));
@@ -143,6 +176,17 @@ Eigen::Matrix<T, 2, 2> castigliano_compliance(const Shape& shape, const curved_b
                                               const Policy& = Policy()) {
   if (!detail::check_beam<T, Policy>("gecko::castigliano_compliance", beam))
     return detail::nan_matrix<T>();
+  using std::isfinite;
+  if (!(opts.max_levels >= 1 && opts.max_levels <= detail::tanh_sinh_table<T>::max_levels)) {
+    raise_domain_error<T, Policy>("gecko::castigliano_compliance", "max_levels",
+                                  T(opts.max_levels), "1 <= max_levels <= 9 (the table's levels)");
+    return detail::nan_matrix<T>();
+  }
+  if (!(opts.tol >= T(0)) || !isfinite(opts.tol)) {
+    raise_domain_error<T, Policy>("gecko::castigliano_compliance", "tol", opts.tol,
+                                  "0 <= tol < inf (0: eps^(2/3))");
+    return detail::nan_matrix<T>();
+  }
   using std::isinf;
   // Inextensible beams never pay for the axial integrands.
   if (isinf(beam.EA))

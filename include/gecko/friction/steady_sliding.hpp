@@ -23,7 +23,8 @@
 
 namespace gecko {
 
-// N spatulae, each with rigidity K (symmetric positive definite, K_par_perp < 0) and the forces
+// N spatulae, each with rigidity K (symmetric positive definite; K_par_perp < 0 for the paper's
+// curved beam, >= 0 for straight pillars or dragging against the curvature) and the forces
 // (f_par1, f_perp1) just after re-sticking.
 template <class T>
 struct sliding_params {
@@ -86,7 +87,11 @@ bool check_sliding_params(const char* function, const sliding_params<T>& p) {
   using std::isfinite;
   if (!check_positive<T, Policy>(function, "N", p.N, "0 < N < inf (number of spatulae)"))
     return false;
-  if (!check_coupled_rigidity<T, Policy>(function, p.K)) return false;
+  // Any symmetric positive definite K: K_par_perp < 0 is the paper's curved beam (eq 1);
+  // K_par_perp = 0 a straight pillar (no friction-adhesion coupling) and K_par_perp > 0 the
+  // beam dragged against its curvature (the paper's control: the normal force grows
+  // compressive with the stretch, regular friction).
+  if (!check_spd<T, Policy>(function, "K", p.K)) return false;
   if (!isfinite(p.f_par1)) {
     raise_domain_error<T, Policy>(function, "f_par1", p.f_par1, "finite f_par1");
     return false;
@@ -115,9 +120,16 @@ sliding_force<T> nan_force() {
 }
 
 // Parameters already checked; G = G(V) given.
+// dG/dV at V = 0 where known: Eyring G0 / V*; otherwise NaN (t_on at V = 0 then stays inf).
+template <class T, class Law>
+T law_slope_at_zero(const Law&) { return std::numeric_limits<T>::quiet_NaN(); }
+template <class T, class P>
+T law_slope_at_zero(const eyring_detachment<T, P>& l) { return l.G0 / l.V_star; }
+
+// dG0: dG/dV at V = 0 where the law knows it (NaN otherwise), for the limit of t_on at V = 0.
 template <class T, class Policy>
 sliding_force<T> steady_sliding_imp(const char* function, const sliding_params<T>& p, T V, T G,
-                                    T t_off) {
+                                    T t_off, T dG0 = std::numeric_limits<T>::quiet_NaN()) {
   using std::isfinite;
   using std::sqrt;
   if (!(G >= T(0)) || !isfinite(G)) {
@@ -145,7 +157,13 @@ sliding_force<T> steady_sliding_imp(const char* function, const sliding_params<T
     }
     duty = dd / denom;
   }
-  const T t_on = V > T(0) ? dd / V : std::numeric_limits<T>::infinity();
+  // At V = 0: t_on = dd / V -> inf if G(0) > 0 (never detaches). If G(0) = 0 (Eyring) and
+  // f_par1 > 0, dd = 2G/(f1 + q) ~ G/f1 and t_on -> G'(0) / f_par1, finite (the plastic
+  // spatula still detaches after a finite time as V -> 0); with f_par1 <= 0, dd ~ sqrt(2G/K)
+  // and t_on ~ V^-1/2 -> inf.
+  T t_on = std::numeric_limits<T>::infinity();
+  if (V > T(0)) t_on = dd / V;
+  else if (G == T(0) && f1 > T(0) && std::isfinite(dG0)) t_on = dG0 / f1;
   return {p.N * duty * mean_par, p.N * duty * mean_perp, dd, t_on};
 }
 
@@ -172,7 +190,8 @@ sliding_force<T> steady_sliding(const sliding_params<T>& p, const Law& law, T V,
       !detail::check_velocity<T, Policy>(function, V) ||
       !detail::check_t_off<T, Policy>(function, t_off))
     return detail::nan_force<T>();
-  return detail::steady_sliding_imp<T, Policy>(function, p, V, static_cast<T>(law(V)), t_off);
+  return detail::steady_sliding_imp<T, Policy>(function, p, V, static_cast<T>(law(V)), t_off,
+                                               detail::law_slope_at_zero<T>(law));
 }
 
 namespace detail {
@@ -211,12 +230,13 @@ void steady_sliding(const sliding_params<T>& p, const Law& law, const T* V, std:
                     T t_off = T(0), const Policy& = Policy()) {
   static const char* function = "gecko::steady_sliding";
   const detail::batch_law<T, Law> G{law};
+  const T slope0 = detail::law_slope_at_zero<T>(law);
   const bool ok = detail::check_sliding_params<T, Policy>(function, p) &&
                   detail::check_t_off<T, Policy>(function, t_off) && G.valid();
   for (std::size_t i = 0; i < n; ++i) {
     sliding_force<T> r = detail::nan_force<T>();
     if (ok && detail::check_velocity<T, Policy>(function, V[i]))
-      r = detail::steady_sliding_imp<T, Policy>(function, p, V[i], G(V[i]), t_off);
+      r = detail::steady_sliding_imp<T, Policy>(function, p, V[i], G(V[i]), t_off, slope0);
     F_par[i] = r.F_par;
     if (F_perp) F_perp[i] = r.F_perp;
     if (stretch) stretch[i] = r.stretch;
