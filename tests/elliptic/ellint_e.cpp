@@ -16,22 +16,22 @@ const double pio2 = 1.5707963267948966;
 const double pi_d = 3.141592653589793;
 }  // namespace
 
-TEST_CASE("ellint_e: mpmath table, double: <= 8 eps") {
+TEST_CASE("ellint_e: mpmath table, double: <= 4 eps") {
   const auto tally = legendre_tally<double>(
       "E", "ellint_e<double>", [](auto phi, auto m) { return gecko::ellint_e(phi, m); });
-  CHECK(tally.overall.worst <= 8);
+  CHECK(tally.overall.worst <= 4);
 }
 
-TEST_CASE("ellint_e: mpmath table, long double: <= 8 eps") {
+TEST_CASE("ellint_e: mpmath table, long double: <= 4 eps") {
   const auto tally = legendre_tally<long double>(
       "E", "ellint_e<long double>", [](auto phi, auto m) { return gecko::ellint_e(phi, m); });
-  CHECK(tally.overall.worst <= 8);
+  CHECK(tally.overall.worst <= 4);
 }
 
-TEST_CASE("ellint_e: table inputs rounded to float, against double: <= 8 eps(float)") {
+TEST_CASE("ellint_e: table inputs rounded to float, against double: <= 4 eps(float)") {
   const auto tally = legendre_tally<float>(
       "E", "ellint_e<float>", [](auto phi, auto m) { return gecko::ellint_e(phi, m); });
-  CHECK(tally.overall.worst <= 8);
+  CHECK(tally.overall.worst <= 4);
 }
 
 TEST_CASE("ellint_e: special values") {
