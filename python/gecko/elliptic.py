@@ -19,6 +19,13 @@ from ._vectorize import error_code as _error_code, flat_args as _flat_args, shap
 from ._vectorize import ERROR_CODES as _CODES, SCALAR_TYPES as _S, ufunc_call as _ufunc_call
 
 ufuncs = _core.ufuncs
+_ellint_f_scalar = _core.ellint_f_scalar
+_ellint_e_scalar = _core.ellint_e_scalar
+_ellint_k_scalar = _core.ellint_k_scalar
+_carlson_rf_scalar = _core.carlson_rf_scalar
+_carlson_rd_scalar = _core.carlson_rd_scalar
+_carlson_rj_scalar = _core.carlson_rj_scalar
+_carlson_rc_scalar = _core.carlson_rc_scalar
 
 __all__ = [
     "ellint_f", "ellint_e", "ellint_k", "ellint_ek", "EK",
@@ -51,7 +58,8 @@ def set_num_threads(threads: int) -> int:
 
 
 # Each function: plain Python scalars go to the compiled scalar kernel directly (the ufunc
-# machinery costs more than the kernel); anything else goes through the ufunc.
+# machinery costs more than the kernel; floats with the default errors are tested first, the
+# cheapest test), anything else goes through the ufunc.
 def ellint_f(phi, m, *, errors: str = "raise", **kwargs):
     """Incomplete elliptic integral of the first kind, F(phi | m) = int_0^phi dt / sqrt(1 - m sin^2 t).
 
@@ -89,8 +97,10 @@ def ellint_f(phi, m, *, errors: str = "raise", **kwargs):
     >>> bool(np.isclose(gecko.ellint_f(np.pi, 0.5), 2 * gecko.ellint_k(0.5), rtol=1e-15))
     True
     """
+    if type(phi) is float and type(m) is float and errors == "raise" and not kwargs:
+        return _ellint_f_scalar(phi, m, 0)
     if not kwargs and type(phi) in _S and type(m) in _S and errors in _CODES:
-        return _core.ellint_f_scalar(phi, m, _CODES[errors])
+        return _ellint_f_scalar(phi, m, _CODES[errors])
     return _ufunc_call(ufuncs.ellint_f, _core.ellint_f_scalar, (phi, m), ("phi", "m"), errors, kwargs)
 
 
@@ -126,8 +136,10 @@ def ellint_e(phi, m, *, errors: str = "raise", **kwargs):
     >>> round(float(gecko.ellint_e(np.pi / 2, 0.5)), 14)
     1.35064388104768
     """
+    if type(phi) is float and type(m) is float and errors == "raise" and not kwargs:
+        return _ellint_e_scalar(phi, m, 0)
     if not kwargs and type(phi) in _S and type(m) in _S and errors in _CODES:
-        return _core.ellint_e_scalar(phi, m, _CODES[errors])
+        return _ellint_e_scalar(phi, m, _CODES[errors])
     return _ufunc_call(ufuncs.ellint_e, _core.ellint_e_scalar, (phi, m), ("phi", "m"), errors, kwargs)
 
 
@@ -163,8 +175,10 @@ def ellint_k(m, *, errors: str = "raise", **kwargs):
     >>> gecko.ellint_k([0.5, 1.5], errors="nan")
     array([1.85407468,        nan])
     """
+    if type(m) is float and errors == "raise" and not kwargs:
+        return _ellint_k_scalar(m, 0)
     if not kwargs and type(m) in _S and errors in _CODES:
-        return _core.ellint_k_scalar(m, _CODES[errors])
+        return _ellint_k_scalar(m, _CODES[errors])
     return _ufunc_call(ufuncs.ellint_k, _core.ellint_k_scalar, (m,), ("m",), errors, kwargs)
 
 
@@ -252,8 +266,10 @@ def carlson_rf(x, y, z, *, errors: str = "raise", **kwargs):
     >>> round(float(gecko.carlson_rf(1.0, 2.0, 0.0)), 13)     # Carlson's test value
     1.3110287771461
     """
+    if type(x) is float and type(y) is float and type(z) is float and errors == "raise" and not kwargs:
+        return _carlson_rf_scalar(x, y, z, 0)
     if not kwargs and type(x) in _S and type(y) in _S and type(z) in _S and errors in _CODES:
-        return _core.carlson_rf_scalar(x, y, z, _CODES[errors])
+        return _carlson_rf_scalar(x, y, z, _CODES[errors])
     return _ufunc_call(ufuncs.carlson_rf, _core.carlson_rf_scalar, (x, y, z), ("x", "y", "z"), errors, kwargs)
 
 
@@ -289,8 +305,10 @@ def carlson_rd(x, y, z, *, errors: str = "raise", **kwargs):
     >>> round(float(gecko.carlson_rd(0.0, 2.0, 1.0)), 13)     # Carlson's test value
     1.7972103521034
     """
+    if type(x) is float and type(y) is float and type(z) is float and errors == "raise" and not kwargs:
+        return _carlson_rd_scalar(x, y, z, 0)
     if not kwargs and type(x) in _S and type(y) in _S and type(z) in _S and errors in _CODES:
-        return _core.carlson_rd_scalar(x, y, z, _CODES[errors])
+        return _carlson_rd_scalar(x, y, z, _CODES[errors])
     return _ufunc_call(ufuncs.carlson_rd, _core.carlson_rd_scalar, (x, y, z), ("x", "y", "z"), errors, kwargs)
 
 
@@ -326,8 +344,10 @@ def carlson_rj(x, y, z, p, *, errors: str = "raise", **kwargs):
     >>> round(float(gecko.carlson_rj(2.0, 3.0, 4.0, 5.0)), 14)  # Carlson's test value
     0.14297579667157
     """
+    if type(x) is float and type(y) is float and type(z) is float and type(p) is float and errors == "raise" and not kwargs:
+        return _carlson_rj_scalar(x, y, z, p, 0)
     if not kwargs and type(x) in _S and type(y) in _S and type(z) in _S and type(p) in _S and errors in _CODES:
-        return _core.carlson_rj_scalar(x, y, z, p, _CODES[errors])
+        return _carlson_rj_scalar(x, y, z, p, _CODES[errors])
     return _ufunc_call(ufuncs.carlson_rj, _core.carlson_rj_scalar, (x, y, z, p), ("x", "y", "z", "p"), errors, kwargs)
 
 
@@ -363,6 +383,8 @@ def carlson_rc(x, y, *, errors: str = "raise", **kwargs):
     >>> bool(math.isclose(gecko.carlson_rc(0.0, 0.25), math.pi, rel_tol=1e-15))
     True
     """
+    if type(x) is float and type(y) is float and errors == "raise" and not kwargs:
+        return _carlson_rc_scalar(x, y, 0)
     if not kwargs and type(x) in _S and type(y) in _S and errors in _CODES:
-        return _core.carlson_rc_scalar(x, y, _CODES[errors])
+        return _carlson_rc_scalar(x, y, _CODES[errors])
     return _ufunc_call(ufuncs.carlson_rc, _core.carlson_rc_scalar, (x, y), ("x", "y"), errors, kwargs)
