@@ -17,8 +17,8 @@
 // relative accuracy unless Delta^2 / (m s^2) is below 2^-digits, which double inputs on the
 // real domain do not reach in practice (the closest a double phi comes to the edge).
 // sin and cos of the double-word argument come from their Taylor series (DLMF 4.19.1) in
-// Horner form, 15 terms: for |x| <= pi/4 the first omitted term is below 2^-120 relative.
-// This path costs about 0.2 us and is taken only near the edge (callers decide).
+// Horner form, 15 terms: for |x| <= pi/4 the first omitted term is below 2^-120 relative; the
+// 8 smallest are summed in T alone (see dw_taylor_horner).
 #pragma once
 
 #include <cmath>
@@ -85,13 +85,20 @@ inline dword<T> dw_div(dword<T> x, T n) {
 }
 
 // 1 - x^2/((k)(k+1)) (1 - x^2/((k+2)(k+3)) (1 - ...)): the Taylor series of sin x / x (first = 2)
-// or of cos x (first = 1), x2 = x^2.
+// or of cos x (first = 1), x2 = x^2, |x| <= pi/4. The innermost levels j > 7 are summed in T
+// alone: their rounding is scaled by x^14/14! < 2^-44 on its way out, so the result keeps about
+// digits + 44 bits (2^-97 for double), the double-word levels j <= 7 carry it.
 template <class T>
 inline dword<T> dw_taylor_horner(dword<T> x2, int first) {
-  constexpr int terms = 15;
-  dword<T> t{T(1), T(0)};
-  for (int j = terms; j >= 1; --j) {
+  constexpr int terms = 15, dw_terms = 7;
+  T tt = 1;
+  for (int j = terms; j > dw_terms; --j) {
     const int k = 2 * j - 2 + first;  // (k)(k+1) = (2j)(2j+1) for sin, (2j-1)(2j) for cos
+    tt = 1 - tt * x2.hi / (T(k) * T(k + 1));
+  }
+  dword<T> t{tt, T(0)};
+  for (int j = dw_terms; j >= 1; --j) {
+    const int k = 2 * j - 2 + first;
     t = dw_div(dw_mul(t, x2), T(k) * T(k + 1));
     const dword<T> u = fast_two_sum(T(1), -t.hi);  // 1 - t, |t| <= 1/4
     t = fast_two_sum(u.hi, u.lo - t.lo);
