@@ -88,18 +88,37 @@ inline dword<T> dw_div(dword<T> x, T n) {
 // or of cos x (first = 1), x2 = x^2, |x| <= pi/4. The innermost levels j > 7 are summed in T
 // alone: their rounding is scaled by x^14/14! < 2^-44 on its way out, so the result keeps about
 // digits + 44 bits (2^-97 for double), the double-word levels j <= 7 carry it.
+constexpr int taylor_terms = 15;
+
+// 1/(k(k+1)) for k = 1 .. 2 taylor_terms as double-words (divisions once, not on every call).
+template <class T>
+struct taylor_reciprocals {
+  dword<T> r[2 * taylor_terms + 1];
+};
+
+template <class T>
+inline const taylor_reciprocals<T>& reciprocals() {
+  static const taylor_reciprocals<T> table = [] {
+    taylor_reciprocals<T> t{};
+    for (int k = 1; k <= 2 * taylor_terms; ++k) t.r[k] = dw_div(dword<T>{T(1), T(0)}, T(k) * T(k + 1));
+    return t;
+  }();
+  return table;
+}
+
 template <class T>
 inline dword<T> dw_taylor_horner(dword<T> x2, int first) {
-  constexpr int terms = 15, dw_terms = 7;
+  constexpr int dw_terms = 7;
+  const dword<T>* inv = reciprocals<T>().r;
   T tt = 1;
-  for (int j = terms; j > dw_terms; --j) {
+  for (int j = taylor_terms; j > dw_terms; --j) {
     const int k = 2 * j - 2 + first;  // (k)(k+1) = (2j)(2j+1) for sin, (2j-1)(2j) for cos
-    tt = 1 - tt * x2.hi / (T(k) * T(k + 1));
+    tt = 1 - tt * x2.hi * inv[k].hi;
   }
   dword<T> t{tt, T(0)};
   for (int j = dw_terms; j >= 1; --j) {
     const int k = 2 * j - 2 + first;
-    t = dw_div(dw_mul(t, x2), T(k) * T(k + 1));
+    t = dw_mul(dw_mul(t, x2), inv[k]);
     const dword<T> u = fast_two_sum(T(1), -t.hi);  // 1 - t, |t| <= 1/4
     t = fast_two_sum(u.hi, u.lo - t.lo);
   }
