@@ -122,8 +122,8 @@ def kernel_rows(rows, families, gecko_settings=("full", "precision<32>")):
             continue
         if m.startswith("gsl_sf") and s != "GSL_PREC_DOUBLE":
             continue
-        if m.endswith("(Python)"):  # in tradeoff.csv and the figure; the table keeps one call per library
-            continue
+        if m.endswith("(Python)") or s == "Python scalar call":
+            continue  # in tradeoff.csv and the figure; the table keeps one vectorised call per library
         keep.append(r)
     return keep
 

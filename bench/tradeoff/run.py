@@ -354,7 +354,60 @@ def time_python_kernels(quick, gecko_mod):
                                  time_per_call_ns=med / n * 1e9, time_q1_ns=q1 / n * 1e9, time_q3_ns=q3 / n * 1e9,
                                  max_err=mx, rms_err=rms, unit="eps", failed=bad, source="run.py",
                                  note="vectorised call over the whole set, process CPU time"))
+        # One Python call per element (plain floats): what a scalar call costs, interpreter included.
+        ns = min(len(hi), 300 if quick else 2000)
+        cols = [a[:ns].tolist() for a in args]
+        scalar = [(f"scipy.special.{sfn.__name__}", "Python scalar call", sfn)]
+        if gecko_mod is not None:
+            scalar.append((f"gecko.{gname} (Python)", "Python scalar call", getattr(gecko_mod, gname)))
+        for method, setting, fn in scalar:
+            def loop(fn=fn):
+                return [fn(*v) for v in zip(*cols)]
+            mx, rms, bad = rel_err_eps(np.array(loop()), hi[:ns], lo[:ns])
+            med, q1, q3 = _median_time(loop, reps, min_s)
+            rows.append(make_row(family=family, method=method, setting=setting, input_set=set_name, n=ns,
+                                 time_per_call_ns=med / ns * 1e9, time_q1_ns=q1 / ns * 1e9, time_q3_ns=q3 / ns * 1e9,
+                                 max_err=mx, rms_err=rms, unit="eps", failed=bad, source="run.py",
+                                 note=f"a Python loop of scalar calls over the first {ns} elements, process CPU time"))
+        if gecko_mod is not None:
+            # The ufunc on the project's pool, 2 threads, wall time (process CPU time would add the threads up).
+            # The set is tiled to 1e6 elements (2e5 in --quick) so that the thread start is amortised.
+            ell = gecko_mod.elliptic
+            uf = getattr(ell.ufuncs, gname)
+            reps_big = -(-(200_000 if quick else 1_000_000) // len(hi))
+            big = [np.tile(a, reps_big) for a in args]
+            n = len(big[0])
+            before = ell.set_num_threads(2)
+            try:
+                got = uf(*big)
+                mx, rms, bad = rel_err_eps(got, np.tile(hi, reps_big), np.tile(lo, reps_big))
+                med, q1, q3 = _median_wall(lambda: uf(*big), reps, min_s)
+            finally:
+                ell.set_num_threads(before)
+            rows.append(make_row(family=family, method=f"gecko.elliptic.ufuncs.{gname} (Python)",
+                                 setting="numpy array, 2 threads", input_set=set_name, n=n,
+                                 time_per_call_ns=med / n * 1e9, time_q1_ns=q1 / n * 1e9, time_q3_ns=q3 / n * 1e9,
+                                 max_err=mx, rms_err=rms, unit="eps", failed=bad, source="run.py",
+                                 note=f"the raw ufunc on the set tiled to {n} elements, 2 threads of the "
+                                      "project pool, wall time"))
     return rows
+
+
+def _median_wall(fn, reps, min_s):
+    """As _median_time, in wall time (for calls that run on several threads)."""
+    fn()
+    t0 = time.perf_counter()
+    fn()
+    one = max(time.perf_counter() - t0, 1e-6)
+    inner = max(1, int(math.ceil(min_s / one)))
+    samples = []
+    for _ in range(reps):
+        t0 = time.perf_counter()
+        for _ in range(inner):
+            fn()
+        samples.append((time.perf_counter() - t0) / inner)
+    samples.sort()
+    return samples[len(samples) // 2], samples[len(samples) // 4], samples[(3 * len(samples)) // 4]
 
 
 def time_scipy_peer(quick, gecko_mod, peer_path):

@@ -159,3 +159,66 @@ def check_table(table, name: str = "designs") -> None:
     elif not hasattr(table, "_params"):
         real_array(table, name)
 
+
+SCALAR_TYPES = frozenset((float, int, np.float64))
+ERROR_CODES = _ERRORS
+
+
+def _ufunc_input(a, name):
+    """Real numpy arrays and scalars (float32 kept) as they are; anything else through
+    ``real_array``, which names a complex, None, text, date or object element, or a masked array."""
+    if type(a) in SCALAR_TYPES:
+        return a
+    if isinstance(a, (np.ndarray, np.generic)) and not isinstance(a, np.ma.MaskedArray) and a.dtype.kind in "biuf":
+        return a
+    return real_array(a, name)
+
+
+def ufunc_call(ufunc, scalar, args, names, errors, kwargs):
+    """Calls a gecko ufunc (NaN outside the domain) with numpy's keywords (``out=``,
+    ``where=``, ``dtype=``, ...), and with ``errors="raise"`` raises the ValueError of the first
+    element (C order of the broadcast shape) that the ufunc turned into NaN from non-NaN inputs:
+    the compiled ``scalar(*values, 0)`` names the argument, its value and the allowed range, and
+    "(at index ...)" is appended. Inputs are checked as everywhere (``real_array``), named by
+    ``names``. (The public functions call ``scalar`` directly for plain Python scalars: the
+    ufunc machinery costs more than the kernel.)"""
+    code = error_code(errors)
+    args = tuple(_ufunc_input(a, n) for a, n in zip(args, names))
+    result = ufunc(*args, **kwargs)
+    if code == 0:
+        _raise_first_bad(ufunc, scalar, args, kwargs, result)
+    return result
+
+
+def _raise_first_bad(ufunc, scalar, args, kwargs, result):
+    res = np.asarray(result)
+    if res.dtype.kind != "f":
+        return
+    bad = np.isnan(res)
+    if not bad.any():
+        return
+    inputs = np.broadcast_arrays(*(np.asarray(a) for a in args))
+    for a in inputs:
+        if a.dtype.kind in "fc":
+            bad &= ~np.isnan(a)  # NaN in -> NaN out is not an error
+    where = kwargs.get("where", True)
+    if where is not True:
+        bad &= np.broadcast_to(np.asarray(where, dtype=bool), bad.shape)
+    if not bad.any():
+        return
+    flat = int(np.argmax(bad.reshape(-1)))
+    idx = np.unravel_index(flat, bad.shape) if bad.shape else ()
+    dtype = kwargs.get("dtype") or res.dtype
+    values = [float(np.asarray(a[idx]).astype(dtype)) for a in inputs]
+    where_txt = ""
+    if len(bad.shape) > 1:
+        where_txt = f" (at index {tuple(int(i) for i in idx)})"
+    elif len(bad.shape) == 1:
+        where_txt = f" (at index {int(idx[0])})"
+    try:
+        scalar(*values, 0)
+    except ValueError as e:
+        raise ValueError(str(e) + where_txt) from None
+    # The double kernel accepts what the float32 loop did not (rounding at a domain edge).
+    raise ValueError(f"gecko.{ufunc.__name__}: arguments {tuple(values)} are out of the domain "
+                     f"in {np.dtype(dtype).name}{where_txt}")

@@ -1,11 +1,14 @@
-"""gecko.elliptic — Legendre and Carlson elliptic integrals, vectorised like numpy ufuncs.
+"""gecko.elliptic — Legendre and Carlson elliptic integrals as numpy ufuncs.
 
-Every function broadcasts its arguments against each other (scalars, lists, arrays of any
-shape), returns a float for all-scalar input and an array otherwise, and runs its loop in C++
-without the GIL. Parameter convention: ``m = k**2`` (as in scipy.special, not Boost or GSL).
-
-Domain errors raise ``ValueError`` naming the argument and the allowed range; with
-``errors="nan"`` the offending elements become NaN instead (for batch work). NaN input gives NaN.
+The raw ufuncs are ``gecko.elliptic.ufuncs.ellint_f``, ``.ellint_e``, ``.ellint_k``,
+``.carlson_rf``, ``.carlson_rd``, ``.carlson_rj``, ``.carlson_rc``: float64 and float32 loops,
+numpy's broadcasting, ``out=``, ``where=``, ``dtype=``, and NaN for out-of-domain elements.
+The functions below call them and take the same keywords; by default (``errors="raise"``) an
+out-of-domain element raises ``ValueError`` naming the argument, its value, the allowed range and
+its index in the broadcast shape; ``errors="nan"`` leaves the NaN. NaN input gives NaN. A plain
+Python scalar call returns a float. Parameter convention: ``m = k**2`` (as in scipy.special, not
+Boost or GSL). Large arrays run on several threads (``set_num_threads``); the results are
+bitwise identical for any thread count.
 """
 from __future__ import annotations
 
@@ -13,7 +16,16 @@ from typing import NamedTuple
 
 from . import _core
 from ._vectorize import error_code as _error_code, flat_args as _flat_args, shaped as _shaped
-from ._vectorize import vectorised as _vectorised
+from ._vectorize import ERROR_CODES as _CODES, SCALAR_TYPES as _S, ufunc_call as _ufunc_call
+
+ufuncs = _core.ufuncs
+_ellint_f_scalar = _core.ellint_f_scalar
+_ellint_e_scalar = _core.ellint_e_scalar
+_ellint_k_scalar = _core.ellint_k_scalar
+_carlson_rf_scalar = _core.carlson_rf_scalar
+_carlson_rd_scalar = _core.carlson_rd_scalar
+_carlson_rj_scalar = _core.carlson_rj_scalar
+_carlson_rc_scalar = _core.carlson_rc_scalar
 
 __all__ = [
     "ellint_f", "ellint_e", "ellint_k", "ellint_ek", "EK",
@@ -21,7 +33,34 @@ __all__ = [
 ]
 
 
-def ellint_f(phi, m, *, errors: str = "raise"):
+def set_num_threads(threads: int) -> int:
+    """Threads per call of the ufunc loops.
+
+    Parameters
+    ----------
+    threads : int
+        0 (the default) picks by size (one thread below about 32,000 elements, at most the
+        machine's logical CPUs); k > 0 uses exactly k. Results do not depend on it, bit for bit.
+
+    Returns
+    -------
+    int
+        The previous setting.
+
+    Examples
+    --------
+    >>> from gecko import elliptic
+    >>> before = elliptic.set_num_threads(1)
+    >>> elliptic.set_num_threads(before)
+    1
+    """
+    return _core.set_ufunc_threads(threads)
+
+
+# Each function: plain Python scalars go to the compiled scalar kernel directly (the ufunc
+# machinery costs more than the kernel; floats with the default errors are tested first, the
+# cheapest test), anything else goes through the ufunc.
+def ellint_f(phi, m, *, errors: str = "raise", **kwargs):
     """Incomplete elliptic integral of the first kind, F(phi | m) = int_0^phi dt / sqrt(1 - m sin^2 t).
 
     Broadcasts like a numpy ufunc; the loop runs in C++ without the GIL. Parameter convention
@@ -35,10 +74,14 @@ def ellint_f(phi, m, *, errors: str = "raise"):
         Parameter, m <= 1, or m > 1 where sin^2(phi) <= 1/m.
     errors : {"raise", "nan"}, optional
         Out-of-domain input raises ``ValueError`` (default) or gives NaN for that element.
+    **kwargs
+        numpy ufunc keywords (``out=``, ``where=``, ``dtype=``, ``casting=``, ...), passed to
+        the ufunc in :data:`ufuncs`; float32 input (or ``dtype=np.float32``) gives float32.
 
     Returns
     -------
     float or numpy.ndarray
+        A float for plain Python scalars, else what the ufunc returns (float64, or float32).
 
     Raises
     ------
@@ -54,10 +97,14 @@ def ellint_f(phi, m, *, errors: str = "raise"):
     >>> bool(np.isclose(gecko.ellint_f(np.pi, 0.5), 2 * gecko.ellint_k(0.5), rtol=1e-15))
     True
     """
-    return _vectorised(_core.ellint_f, phi, m, errors=errors)
+    if type(phi) is float and type(m) is float and errors == "raise" and not kwargs:
+        return _ellint_f_scalar(phi, m, 0)
+    if not kwargs and type(phi) in _S and type(m) in _S and errors in _CODES:
+        return _ellint_f_scalar(phi, m, _CODES[errors])
+    return _ufunc_call(ufuncs.ellint_f, _core.ellint_f_scalar, (phi, m), ("phi", "m"), errors, kwargs)
 
 
-def ellint_e(phi, m, *, errors: str = "raise"):
+def ellint_e(phi, m, *, errors: str = "raise", **kwargs):
     """Incomplete elliptic integral of the second kind, E(phi | m) = int_0^phi sqrt(1 - m sin^2 t) dt.
 
     Parameters
@@ -68,10 +115,14 @@ def ellint_e(phi, m, *, errors: str = "raise"):
         Parameter, m <= 1, or m > 1 where sin^2(phi) <= 1/m.
     errors : {"raise", "nan"}, optional
         Out-of-domain input raises ``ValueError`` (default) or gives NaN for that element.
+    **kwargs
+        numpy ufunc keywords (``out=``, ``where=``, ``dtype=``, ``casting=``, ...), passed to
+        the ufunc in :data:`ufuncs`; float32 input (or ``dtype=np.float32``) gives float32.
 
     Returns
     -------
     float or numpy.ndarray
+        A float for plain Python scalars, else what the ufunc returns (float64, or float32).
 
     Raises
     ------
@@ -85,10 +136,14 @@ def ellint_e(phi, m, *, errors: str = "raise"):
     >>> round(float(gecko.ellint_e(np.pi / 2, 0.5)), 14)
     1.35064388104768
     """
-    return _vectorised(_core.ellint_e, phi, m, errors=errors)
+    if type(phi) is float and type(m) is float and errors == "raise" and not kwargs:
+        return _ellint_e_scalar(phi, m, 0)
+    if not kwargs and type(phi) in _S and type(m) in _S and errors in _CODES:
+        return _ellint_e_scalar(phi, m, _CODES[errors])
+    return _ufunc_call(ufuncs.ellint_e, _core.ellint_e_scalar, (phi, m), ("phi", "m"), errors, kwargs)
 
 
-def ellint_k(m, *, errors: str = "raise"):
+def ellint_k(m, *, errors: str = "raise", **kwargs):
     """Complete elliptic integral of the first kind, K(m) = F(pi/2 | m).
 
     Parameters
@@ -97,10 +152,14 @@ def ellint_k(m, *, errors: str = "raise"):
         Parameter, m <= 1 (K(1) = inf).
     errors : {"raise", "nan"}, optional
         Out-of-domain input raises ``ValueError`` (default) or gives NaN for that element.
+    **kwargs
+        numpy ufunc keywords (``out=``, ``where=``, ``dtype=``, ``casting=``, ...), passed to
+        the ufunc in :data:`ufuncs`; float32 input (or ``dtype=np.float32``) gives float32.
 
     Returns
     -------
     float or numpy.ndarray
+        A float for plain Python scalars, else what the ufunc returns (float64, or float32).
 
     Raises
     ------
@@ -116,7 +175,11 @@ def ellint_k(m, *, errors: str = "raise"):
     >>> gecko.ellint_k([0.5, 1.5], errors="nan")
     array([1.85407468,        nan])
     """
-    return _vectorised(_core.ellint_k, m, errors=errors)
+    if type(m) is float and errors == "raise" and not kwargs:
+        return _ellint_k_scalar(m, 0)
+    if not kwargs and type(m) in _S and errors in _CODES:
+        return _ellint_k_scalar(m, _CODES[errors])
+    return _ufunc_call(ufuncs.ellint_k, _core.ellint_k_scalar, (m,), ("m",), errors, kwargs)
 
 
 class EK(NamedTuple):
@@ -173,7 +236,7 @@ def ellint_ek(m, *, errors: str = "raise") -> EK:
     return EK(_shaped(e, shape), _shaped(k, shape))
 
 
-def carlson_rf(x, y, z, *, errors: str = "raise"):
+def carlson_rf(x, y, z, *, errors: str = "raise", **kwargs):
     """Carlson's symmetric integral R_F(x, y, z) = 1/2 int_0^inf dt / sqrt((t+x)(t+y)(t+z)).
 
     Parameters
@@ -182,10 +245,14 @@ def carlson_rf(x, y, z, *, errors: str = "raise"):
         >= 0, at most one of them zero. Broadcast together.
     errors : {"raise", "nan"}, optional
         Out-of-domain input raises ``ValueError`` (default) or gives NaN for that element.
+    **kwargs
+        numpy ufunc keywords (``out=``, ``where=``, ``dtype=``, ``casting=``, ...), passed to
+        the ufunc in :data:`ufuncs`; float32 input (or ``dtype=np.float32``) gives float32.
 
     Returns
     -------
     float or numpy.ndarray
+        A float for plain Python scalars, else what the ufunc returns (float64, or float32).
 
     Raises
     ------
@@ -199,10 +266,14 @@ def carlson_rf(x, y, z, *, errors: str = "raise"):
     >>> round(float(gecko.carlson_rf(1.0, 2.0, 0.0)), 13)     # Carlson's test value
     1.3110287771461
     """
-    return _vectorised(_core.carlson_rf, x, y, z, errors=errors)
+    if type(x) is float and type(y) is float and type(z) is float and errors == "raise" and not kwargs:
+        return _carlson_rf_scalar(x, y, z, 0)
+    if not kwargs and type(x) in _S and type(y) in _S and type(z) in _S and errors in _CODES:
+        return _carlson_rf_scalar(x, y, z, _CODES[errors])
+    return _ufunc_call(ufuncs.carlson_rf, _core.carlson_rf_scalar, (x, y, z), ("x", "y", "z"), errors, kwargs)
 
 
-def carlson_rd(x, y, z, *, errors: str = "raise"):
+def carlson_rd(x, y, z, *, errors: str = "raise", **kwargs):
     """Carlson's R_D(x, y, z) = R_J(x, y, z, z) = 3/2 int_0^inf dt / ((t+z) sqrt((t+x)(t+y)(t+z))).
 
     Parameters
@@ -213,10 +284,14 @@ def carlson_rd(x, y, z, *, errors: str = "raise"):
         > 0.
     errors : {"raise", "nan"}, optional
         Out-of-domain input raises ``ValueError`` (default) or gives NaN for that element.
+    **kwargs
+        numpy ufunc keywords (``out=``, ``where=``, ``dtype=``, ``casting=``, ...), passed to
+        the ufunc in :data:`ufuncs`; float32 input (or ``dtype=np.float32``) gives float32.
 
     Returns
     -------
     float or numpy.ndarray
+        A float for plain Python scalars, else what the ufunc returns (float64, or float32).
 
     Raises
     ------
@@ -230,10 +305,14 @@ def carlson_rd(x, y, z, *, errors: str = "raise"):
     >>> round(float(gecko.carlson_rd(0.0, 2.0, 1.0)), 13)     # Carlson's test value
     1.7972103521034
     """
-    return _vectorised(_core.carlson_rd, x, y, z, errors=errors)
+    if type(x) is float and type(y) is float and type(z) is float and errors == "raise" and not kwargs:
+        return _carlson_rd_scalar(x, y, z, 0)
+    if not kwargs and type(x) in _S and type(y) in _S and type(z) in _S and errors in _CODES:
+        return _carlson_rd_scalar(x, y, z, _CODES[errors])
+    return _ufunc_call(ufuncs.carlson_rd, _core.carlson_rd_scalar, (x, y, z), ("x", "y", "z"), errors, kwargs)
 
 
-def carlson_rj(x, y, z, p, *, errors: str = "raise"):
+def carlson_rj(x, y, z, p, *, errors: str = "raise", **kwargs):
     """Carlson's R_J(x, y, z, p) = 3/2 int_0^inf dt / ((t+p) sqrt((t+x)(t+y)(t+z))).
 
     Parameters
@@ -244,10 +323,14 @@ def carlson_rj(x, y, z, p, *, errors: str = "raise"):
         Nonzero; p < 0 gives the Cauchy principal value.
     errors : {"raise", "nan"}, optional
         Out-of-domain input raises ``ValueError`` (default) or gives NaN for that element.
+    **kwargs
+        numpy ufunc keywords (``out=``, ``where=``, ``dtype=``, ``casting=``, ...), passed to
+        the ufunc in :data:`ufuncs`; float32 input (or ``dtype=np.float32``) gives float32.
 
     Returns
     -------
     float or numpy.ndarray
+        A float for plain Python scalars, else what the ufunc returns (float64, or float32).
 
     Raises
     ------
@@ -261,10 +344,14 @@ def carlson_rj(x, y, z, p, *, errors: str = "raise"):
     >>> round(float(gecko.carlson_rj(2.0, 3.0, 4.0, 5.0)), 14)  # Carlson's test value
     0.14297579667157
     """
-    return _vectorised(_core.carlson_rj, x, y, z, p, errors=errors)
+    if type(x) is float and type(y) is float and type(z) is float and type(p) is float and errors == "raise" and not kwargs:
+        return _carlson_rj_scalar(x, y, z, p, 0)
+    if not kwargs and type(x) in _S and type(y) in _S and type(z) in _S and type(p) in _S and errors in _CODES:
+        return _carlson_rj_scalar(x, y, z, p, _CODES[errors])
+    return _ufunc_call(ufuncs.carlson_rj, _core.carlson_rj_scalar, (x, y, z, p), ("x", "y", "z", "p"), errors, kwargs)
 
 
-def carlson_rc(x, y, *, errors: str = "raise"):
+def carlson_rc(x, y, *, errors: str = "raise", **kwargs):
     """Carlson's R_C(x, y) = R_F(x, y, y) = 1/2 int_0^inf dt / ((t+y) sqrt(t+x)).
 
     Parameters
@@ -275,10 +362,14 @@ def carlson_rc(x, y, *, errors: str = "raise"):
         Nonzero; y < 0 gives the Cauchy principal value.
     errors : {"raise", "nan"}, optional
         Out-of-domain input raises ``ValueError`` (default) or gives NaN for that element.
+    **kwargs
+        numpy ufunc keywords (``out=``, ``where=``, ``dtype=``, ``casting=``, ...), passed to
+        the ufunc in :data:`ufuncs`; float32 input (or ``dtype=np.float32``) gives float32.
 
     Returns
     -------
     float or numpy.ndarray
+        A float for plain Python scalars, else what the ufunc returns (float64, or float32).
 
     Raises
     ------
@@ -292,4 +383,8 @@ def carlson_rc(x, y, *, errors: str = "raise"):
     >>> bool(math.isclose(gecko.carlson_rc(0.0, 0.25), math.pi, rel_tol=1e-15))
     True
     """
-    return _vectorised(_core.carlson_rc, x, y, errors=errors)
+    if type(x) is float and type(y) is float and errors == "raise" and not kwargs:
+        return _carlson_rc_scalar(x, y, 0)
+    if not kwargs and type(x) in _S and type(y) in _S and errors in _CODES:
+        return _carlson_rc_scalar(x, y, _CODES[errors])
+    return _ufunc_call(ufuncs.carlson_rc, _core.carlson_rc_scalar, (x, y), ("x", "y"), errors, kwargs)

@@ -26,6 +26,7 @@ using policies::nan_policy;
 }  // namespace
 
 void bind_elliptic(py::module_& m) {
+  bind_elliptic_ufuncs(m);
   m.def("ellint_f", [](const darray& phi, const darray& mm, int errors) {
     return dispatch(errors, [](double p, double q) { return gecko::ellint_f(p, q, default_policy()); },
                     [](double p, double q) { return gecko::ellint_f(p, q, nan_policy()); }, phi, mm);

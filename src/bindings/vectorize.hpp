@@ -42,7 +42,9 @@ struct element_error : std::domain_error {
 // at least min_elements_per_thread each. Negative requests are refused by the callers' checks.
 inline unsigned threads_for(std::size_t n, int requested) {
   if (requested > 0) return detail::clamp_threads(n, static_cast<unsigned>(requested));
-  const unsigned hw = std::thread::hardware_concurrency();
+  // Asked once: glibc answers by reading /sys on every call (about 20 us, more than a whole
+  // scalar ufunc call).
+  static const unsigned hw = std::thread::hardware_concurrency();
   const std::size_t by_size = n / min_elements_per_thread;
   std::size_t nt = hw == 0 ? 1 : hw;
   if (by_size < nt) nt = by_size;

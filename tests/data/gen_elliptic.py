@@ -22,6 +22,9 @@ Tables (CSV, one header line, a `region` column says which part of the domain a 
   elliptic_rc.csv   x,y,rc            R_C   x < y, x > y, nearly equal, x = 0, y < 0 (p.v.)
   elliptic_legendre.csv phi,m,F,E,kappa_s  F(phi|m), E(phi|m) (regions: see legendre_rows);
                     kappa_s = |d ln F / d ln sin(phi)|, the conditioning near the m > 1 edge
+  elliptic_legendre_edge.csv phi,m,F,E  F(phi|m), E(phi|m) for m > 1 next to the edge
+                    sin^2 phi = 1/m (Delta^2 = 1 - m sin^2 phi down to 1e-16) and m -> 1 from
+                    above, phi the exact double on the real domain (regions: see edge_rows)
   elliptic_complete.csv m,K,E         K(m), E(m)
 """
 import csv
@@ -295,6 +298,52 @@ def legendre():
     write("elliptic_legendre.csv", ["phi", "m", "F", "E", "kappa_s", "region"], rows)
 
 
+def edge_phi(m, t):
+    """The double phi nearest arcsin(sqrt(t/m)) (t = m sin^2 phi <= 1), stepped down until
+    m sin^2 phi <= 1 holds exactly (so the row is on the real domain)."""
+    with mp.workdps(60):
+        phi = float(mp.asin(mp.sqrt(mp.mpf(t) / mp.mpf(m))))
+        while mp.sin(mp.mpf(phi)) ** 2 * mp.mpf(m) > 1:
+            phi = math.nextafter(phi, 0)
+    return phi
+
+
+def edge_rows():
+    """m > 1 next to the edge sin^2 phi = 1/m, where Delta^2 = 1 - m sin^2 phi cancels, and
+    m -> 1 from above; t = m sin^2 phi is the distance to the edge."""
+    cases = []
+    for _ in range(300):  # large m, 1 - t from 0.3 down to 1e-16
+        m = loguniform(0.3, 15)
+        cases.append(("edge_large_m", edge_phi(m, 1.0 - 10.0 ** -rng.uniform(0.5, 16)), m))
+    for _ in range(200):  # m -> 1 from above: phi near pi/2 and Delta^2 = c^2 - (m-1) s^2
+        m = 1.0 + 10.0 ** -rng.uniform(1, 15.6)
+        cases.append(("edge_m_near_one", edge_phi(m, 1.0 - 10.0 ** -rng.uniform(0.5, 16)), m))
+    for _ in range(100):  # the last double phi on the domain
+        m = loguniform(1e-9, 15) if rng.random() < 0.7 else 1.0 + 10.0 ** -rng.uniform(1, 15.6)
+        cases.append(("edge_last", edge_phi(m, 1.0), m))
+    for _ in range(40):  # m up to the largest doubles, phi anywhere on the domain
+        m = loguniform(15, 308)
+        cases.append(("edge_huge_m", edge_phi(m, rng.uniform(0.0, 1.0)), m))
+    # the issue's case: m = 1.46e5, m sin^2 phi = 0.9993
+    cases.append(("edge_large_m", edge_phi(1.46e5, 0.9993), 1.46e5))
+    for k in range(1, 5):  # m a few ulps above 1
+        for _ in range(10):
+            m = 1.0 + k * 2.0 ** -52
+            cases.append(("edge_m_near_one", edge_phi(m, 1.0 - 10.0 ** -rng.uniform(0, 16)), m))
+    return cases
+
+
+def edge():
+    reseed("edge")
+    rows = []
+    for region, phi, m in edge_rows():
+        F = stable(mp.ellipf, phi, m)
+        E = stable(mp.ellipe, phi, m)
+        with mp.workdps(DPS):
+            rows.append([repr(phi), repr(m), out(F), out(E), region])
+    write("elliptic_legendre_edge.csv", ["phi", "m", "F", "E", "region"], rows)
+
+
 def complete():
     reseed("complete")
     cases = []
@@ -318,6 +367,7 @@ def complete():
 
 
 TABLES = {"rf_rd": carlson_rf_rd, "rj": carlson_rj, "rc": carlson_rc, "legendre": legendre,
+          "edge": edge,
           "complete": complete}
 
 if __name__ == "__main__":

@@ -33,7 +33,7 @@ def test_ellint_f_and_e_match_mpmath(points):
     worst_f = max(rel_err_eps(f[i], mpmath.ellipf(mpmath.mpf(phi[i]), mpmath.mpf(m[i]))) for i in range(len(phi)))
     worst_e = max(rel_err_eps(e[i], mpmath.ellipe(mpmath.mpf(phi[i]), mpmath.mpf(m[i]))) for i in range(len(phi)))
     assert worst_f <= 3, worst_f
-    assert worst_e <= 8, worst_e
+    assert worst_e <= 4, worst_e
 
 
 def test_complete_integrals_match_mpmath(points):
@@ -45,7 +45,7 @@ def test_complete_integrals_match_mpmath(points):
         E = mpmath.ellipe(mpmath.mpf(m[i]))
         assert rel_err_eps(k[i], K) <= 3
         assert rel_err_eps(ek.K[i], K) <= 3
-        assert rel_err_eps(ek.E[i], E) <= 8
+        assert rel_err_eps(ek.E[i], E) <= 4
 
 
 def test_carlson_match_mpmath():
@@ -129,3 +129,139 @@ def test_threads_give_identical_results_and_gil_is_released():
         t.join()
     assert np.array_equal(results[0], serial) and np.array_equal(results[1], serial)
     assert ticks > 1000, ticks
+
+
+# ---- ufuncs (src/bindings/elliptic_ufuncs.cpp) --------------------------------------------------
+import csv  # noqa: E402
+import os  # noqa: E402
+
+from gecko import elliptic as ell  # noqa: E402
+
+UFUNC_NAMES = ["ellint_f", "ellint_e", "ellint_k", "carlson_rf", "carlson_rd", "carlson_rj", "carlson_rc"]
+DATA = os.path.join(os.path.dirname(__file__), "..", "data")
+
+
+def test_raw_ufuncs_have_float32_and_float64_loops():
+    for name in UFUNC_NAMES:
+        u = getattr(ell.ufuncs, name)
+        assert isinstance(u, np.ufunc), name
+        assert u.nout == 1
+        sig = "f" * u.nin + "->f", "d" * u.nin + "->d"
+        assert sig[0] in u.types and sig[1] in u.types, (name, u.types)
+
+
+def test_out_where_and_dtype_are_numpys():
+    rng = np.random.default_rng(11)
+    phi, m = rng.uniform(0, 1.5, (4, 5)), rng.uniform(-2, 1, 5)
+    want = gecko.ellint_f(phi, m)
+    out = np.empty((4, 5))
+    got = gecko.ellint_f(phi, m, out=out)
+    assert got is out and np.array_equal(out, want)
+    got = ell.ufuncs.ellint_f(phi, m, out=out)
+    assert got is out and np.array_equal(out, want)
+    # where=: masked elements keep what out held
+    mask = phi > 0.7
+    out = np.full((4, 5), -1.0)
+    gecko.ellint_e(phi, m, out=out, where=mask)
+    assert np.array_equal(out[mask], gecko.ellint_e(phi, m)[mask])
+    assert (out[~mask] == -1.0).all()
+    # dtype= and float32 inputs give float32, computed by the float kernel (<= 3 eps(float))
+    for res in (gecko.ellint_f(phi, m, dtype=np.float32),
+                gecko.ellint_f(phi.astype(np.float32), m.astype(np.float32)),
+                ell.ufuncs.ellint_f(phi, m, dtype=np.float32)):
+        assert res.dtype == np.float32
+        ref = gecko.ellint_f(phi.astype(np.float32).astype(float), m.astype(np.float32).astype(float))
+        assert np.all(np.abs(res - ref) <= 3 * np.finfo(np.float32).eps * np.abs(ref))
+    assert gecko.carlson_rf(np.float32([1, 2]), 2.0, 3.0).dtype == np.float32
+    assert gecko.ellint_k(np.float32(0.5)).dtype == np.float32
+    # broadcasting of all four R_J arguments
+    assert gecko.carlson_rj(np.ones((2, 1, 1, 1)), np.ones((3, 1, 1)), np.ones((4, 1)), np.ones(5)).shape == (2, 3, 4, 5)
+
+
+def test_raise_policy_names_argument_value_index_and_range():
+    m = np.array([[0.5, 0.2, 0.1], [0.3, 1.5, 0.1]])
+    with pytest.raises(ValueError, match=r"gecko::ellint_k: m = 1.5 is out of range: need m <= 1 \(at index \(1, 1\)\)$"):
+        gecko.ellint_k(m)
+    with pytest.raises(ValueError, match=r"ellint_f: m = 2 .*sin\^2\(phi\) <= 1/m.*\(at index 3\)$"):
+        gecko.ellint_f(np.array([0.1, 0.2, 0.3, 1.2]), 2.0)
+    with pytest.raises(ValueError, match=r"carlson_rf: y = -1 is out of range.*\(at index \(0, 2\)\)$"):
+        gecko.carlson_rf(1.0, np.array([[1.0, 2.0, -1.0]]), 1.0)
+    with pytest.raises(ValueError, match=r"m = 1.5 is out of range: need m <= 1$"):
+        gecko.ellint_k(1.5)
+    with pytest.raises(ValueError, match=r"m = 1.5 is out of range.*\(at index \(\)\)$|m = 1.5 is out of range.*need m <= 1$"):
+        gecko.ellint_k(np.array(1.5))
+    # float32: the message names the float32 value
+    with pytest.raises(ValueError, match=r"\(at index 1\)$"):
+        gecko.ellint_k(np.float32([0.5, 2.0]))
+    # masked-out bad elements are not errors, NaN input is not an error
+    out = np.zeros(3)
+    gecko.ellint_k(np.array([0.5, 2.0, 0.1]), out=out, where=np.array([True, False, True]))
+    assert out[1] == 0.0
+    assert np.isnan(gecko.ellint_k(np.array([0.5, np.nan]))[1])
+
+
+def test_nan_policy_of_ufuncs_and_functions():
+    m = np.array([0.5, 1.5, 0.2])
+    for res in (ell.ufuncs.ellint_k(m), gecko.ellint_k(m, errors="nan")):
+        assert np.isnan(res[1]) and np.isfinite(res[[0, 2]]).all()
+    assert math.isnan(gecko.ellint_k(1.5, errors="nan"))
+    assert np.isnan(ell.ufuncs.ellint_f(1.2, 2.0))
+    assert np.isnan(ell.ufuncs.carlson_rf(0.0, 0.0, 1.0))
+    assert np.isnan(ell.ufuncs.ellint_e(np.inf, 0.5))
+    assert np.isnan(gecko.carlson_rj(-1.0, 1.0, 1.0, 1.0, errors="nan"))
+
+
+def test_scalar_calls_agree_with_the_ufuncs():
+    assert isinstance(gecko.ellint_f(0.3, 0.2), float)
+    assert gecko.ellint_f(0.3, 0.2) == ell.ufuncs.ellint_f(0.3, 0.2)
+    assert gecko.ellint_e(1, 0) == ell.ufuncs.ellint_e(1.0, 0.0)
+    assert gecko.carlson_rj(1.0, 2.0, 3.0, np.float64(4.0)) == ell.ufuncs.carlson_rj(1.0, 2.0, 3.0, 4.0)
+
+
+@pytest.mark.parametrize("name,nargs", [("ellint_f", 2), ("ellint_e", 2), ("carlson_rf", 3), ("carlson_rj", 4)])
+def test_results_bitwise_identical_for_any_thread_count(name, nargs):
+    rng = np.random.default_rng(5)
+    n = 70_001
+    if name.startswith("ellint"):
+        args = [rng.uniform(-4, 4, n), rng.uniform(-3, 1, n)]
+    else:
+        args = [10.0 ** rng.uniform(-5, 5, n) for _ in range(nargs)]
+    u = getattr(ell.ufuncs, name)
+    before = ell.set_num_threads(1)
+    try:
+        ref = u(*args)
+        for t in (2, 3, 7, 0):
+            ell.set_num_threads(t)
+            assert np.array_equal(u(*args).view(np.uint64), ref.view(np.uint64)), t
+            # strided input and output through the same loop
+            out = np.empty(2 * n)
+            u(*(a[::-1] for a in args), out=out[::2])
+            assert np.array_equal(out[::2][::-1].view(np.uint64), ref.view(np.uint64)), t
+    finally:
+        ell.set_num_threads(before)
+    with pytest.raises(ValueError):
+        ell.set_num_threads(-1)
+
+
+def _read_edge_table():
+    with open(os.path.join(DATA, "elliptic_legendre_edge.csv")) as f:
+        rows = list(csv.DictReader(f))
+    phi = np.array([float(r["phi"]) for r in rows])
+    m = np.array([float(r["m"]) for r in rows])
+    return phi, m, [r["F"] for r in rows], [r["E"] for r in rows]
+
+
+def test_m_above_one_at_the_edge_against_mpmath_table():
+    # exact values at the given double inputs (tests/data/gen_elliptic.py edge), no allowance for
+    # the conditioning in sin(phi): F <= 3 eps, E <= 4 eps
+    phi, m, F, E = _read_edge_table()
+    f, e = gecko.ellint_f(phi, m), gecko.ellint_e(phi, m)
+
+    def worst(got, want):
+        return max(float(abs(mpmath.mpf(float(g)) - mpmath.mpf(w)) / abs(mpmath.mpf(w))) / EPS
+                   for g, w in zip(got, want))
+
+    assert worst(f, F) <= 3
+    assert worst(e, E) <= 4
+    i = int(np.argmin(np.abs(m - 1.46e5)))  # the case of issue 16: m = 1.46e5, m sin^2 phi = 0.9993
+    assert m[i] == 1.46e5 and worst([gecko.ellint_f(float(phi[i]), 1.46e5)], [F[i]]) <= 3

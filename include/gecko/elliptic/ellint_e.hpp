@@ -36,11 +36,15 @@
 #include "gecko/elliptic/first_quadrant_sincos.hpp"
 #include "gecko/elliptic/carlson_rd.hpp"
 #include "gecko/elliptic/carlson_rf_rd.hpp"
+#include "gecko/elliptic/edge_delta.hpp"
 #include "gecko/elliptic/ellint_ek.hpp"
 #include "gecko/elliptic/legendre_domain.hpp"
 
 namespace gecko {
 namespace detail {
+
+template <class T, class Policy>
+inline T ellint_e_m_above_one(T s, T c, T d2, T m);
 
 // E(phi|m) for 0 <= phi <= pi/2 from s = sin phi >= 0, c = cos phi >= 0, (phi, m) in domain.
 template <class T, class Policy = policies::default_policy>
@@ -60,11 +64,21 @@ inline T ellint_e_sc(T s, T c, T m) {
     const auto r = carlson_rf_rd_imp<T, Policy>(c2, T(1), d2);
     return s * (k2 * r.rf + (m * k2 / 3) * s2 * r.rd + m * c / sqrt(d2));
   }
-  // Delta^2 = c^2 - (m-1) s^2, NOT 1 - m s^2: near the boundary the two terms' singular parts
-  // in sqrt(Delta^2) cancel only for a Delta^2 consistent with the rounded s and c; 1 - m s^2
-  // is off by an ulp of 1, which the R_D term amplifies by about 0.1/(m-1): 4.8e6 eps at
-  // m = 1 + 1e-7 (found by fuzz/fuzz_legendre.cpp; this form: < 1 eps against mpmath).
-  const T d2 = fma(-((m - 1) * s), s, c2);
+  // m > 1: ellint_e_m_above_one, with Delta^2 from double-word sin and cos.
+  return ellint_e_m_above_one<T, Policy>(s, c, fma(-((m - 1) * s), s, c2), m);
+}
+
+// E(phi|m) for m > 1, 0 <= phi <= arcsin(1/sqrt m), from s = sin phi, c = cos phi and
+// Delta^2 = 1 - m s^2 (DLMF 19.25.11 with -k'^2 = m - 1 > 0: only positive terms). Delta^2 must
+// be consistent with s and c: near the boundary the two terms' singular parts in sqrt(Delta^2)
+// cancel; a Delta^2 off by an ulp of 1 is amplified by the R_D term by about 0.1/(m-1): 4.8e6 eps
+// at m = 1 + 1e-7 (found by fuzz/fuzz_legendre.cpp). The caller forms it from double-word sin and
+// cos (gecko/elliptic/edge_delta.hpp), accurate at the exact phi.
+template <class T, class Policy>
+inline T ellint_e_m_above_one(T s, T c, T d2, T m) {
+  using std::sqrt;
+  const T c2 = c * c;
+  const T s2 = s * s;
   if (d2 < 0) {
     // phi beyond the edge by rounding (accepted by the domain check): evaluate AT the edge,
     // sin^2 = 1/m, cos^2 = (m-1)/m, Delta = 0. Clamping Delta^2 alone would leave c^2 below
@@ -87,6 +101,10 @@ inline T ellint_e_imp(T phi, T m) {
   using std::sin;
   using std::sqrt;
   const T a = fabs(phi);
+  if (m > 1) {
+    const auto e = m_above_one_arguments(a, m);
+    return copysign(ellint_e_m_above_one<T, Policy>(e.s, e.c, e.d2, m), phi);
+  }
   if (a <= pi_constants<T>::pio2_below) {
     T s, c;
     first_quadrant_sincos(a, s, c);
