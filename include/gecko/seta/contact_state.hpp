@@ -272,8 +272,10 @@ struct forward_problem {
     }
     if (with_beam) {
       const T r1 = R1v(v, o.p);
-      if (!(r1 >= 0)) return false;
-      o.q = r1 > 0 ? (sq >= 0 ? sqrt(r1) : -sqrt(r1)) : T(0);
+      // R1 = 0 (theta1'(0) = 0, where the two base-rate branches join) rounds either way.
+      const T r1_tol = 64 * std::numeric_limits<T>::epsilon() * (ratio * o.p * o.p + 2 * N);
+      if (!(r1 >= -r1_tol)) return false;
+      o.q = signed_sqrt(r1, sq);
       T M1 = ratio * o.p * o.p + N * v;
       if constexpr (E1) M1 += d.c1 * N * N * v * v / 2;
       const auto g1 = make_segment<E1>(d.EI1, d.c1, M1, N);
@@ -520,6 +522,7 @@ inline contact_status contact_solve(const seta_params<T>& d, T Fn, T Ft, const c
     int sp;      // joint rate sign on the interval from the previous node to this one
     T G[2];      // NaN: no state on this branch; +inf: known positive (not evaluated)
     bool join;   // a point where theta1'(0) = 0 (the two branches meet)
+    T r1;        // R1(alpha1) = 1/2 EI1 theta1'(0)^2 there (< 0: no beam reaches this joint state)
   };
   node nodes[max_nodes];
   int nn = 0;
@@ -533,6 +536,7 @@ inline contact_status contact_solve(const seta_params<T>& d, T Fn, T Ft, const c
     fp.joint_sines(x.beta, ub, vj);
     const T p = FP::signed_sqrt(fp.R2u(ub), x.sp);
     const T r1 = fp.R1v(vj, p);
+    x.r1 = r1;
     x.G[0] = x.G[1] = nan;
     if (!(r1 >= 0)) return;
     const int s_short = (x.beta - d.alpha2 - d.alpha1 >= 0) ? 1 : -1;
@@ -568,6 +572,11 @@ inline contact_status contact_solve(const seta_params<T>& d, T Fn, T Ft, const c
     if (fp.eval(x.beta, x.sp, -s_short, o, true, false)) x.G[1 - i_short] = o.G;
     else if (o.unsupported) unsupported = true;
   };
+  // At theta1(l1) = alpha1 (beta = alpha1 + alpha2) the beam's path with theta1'(0) of the joint
+  // rate's sign shrinks to nothing on one side (G -> -l1) and jumps to a whole period on the other:
+  // nodes on both sides of it keep the roots next to that jump bracketed.
+  const T beta_jump = d.alpha1 + d.alpha2;
+  const T jump_gap = T(1e-9) * (1 + fabs(beta_jump));
   for (int k = 0; k < n_pieces; ++k) {
     const auto& pc = pieces[k];
     for (int j = (k == 0 ? 0 : 1); j < n_scan; ++j) {
@@ -575,9 +584,50 @@ inline contact_status contact_solve(const seta_params<T>& d, T Fn, T Ft, const c
       x.beta = j == n_scan - 1 ? pc.beta_to : pc.beta_from + (pc.beta_to - pc.beta_from) * T(j) / T(n_scan - 1);
       x.sp = pc.sp;
       x.join = false;
+      if (nn > 0 && (nodes[nn - 1].beta - beta_jump) * (x.beta - beta_jump) < 0) {
+        const T dir = x.beta > nodes[nn - 1].beta ? T(1) : T(-1);
+        for (const T side : {-dir, dir}) {
+          node y = x;
+          y.beta = beta_jump + side * jump_gap;
+          fill(y);
+          nodes[nn++] = y;
+        }
+      }
       fill(x);
       nodes[nn++] = x;
     }
+  }
+  // A branch without a beam state beyond some beta (the beam's orbit turning from libration to
+  // rotation, where its period diverges and G with it): bisect towards that boundary so that the
+  // last defined stretch has a node (a few evaluations, only where it happens).
+  {
+    node more[max_nodes];
+    int nm = 0;
+    for (int i = 0; i < nn; ++i) {
+      if (i > 0 && nm + 2 < max_nodes) {  // the interval belongs to node i's piece (its sp)
+        for (int b = 0; b < 2; ++b) {
+          const bool d0 = nodes[i - 1].G[b] == nodes[i - 1].G[b], d1 = nodes[i].G[b] == nodes[i].G[b];
+          if (d0 == d1 || !(nodes[i - 1].r1 > 0) || !(nodes[i].r1 > 0)) continue;
+          T lo = d0 ? nodes[i - 1].beta : nodes[i].beta, hi = d0 ? nodes[i].beta : nodes[i - 1].beta;
+          node last;
+          bool have = false;
+          for (int it = 0; it < 6; ++it) {
+            node y;
+            y.beta = (lo + hi) / 2;
+            y.sp = nodes[i].sp;
+            y.join = false;
+            fill(y);
+            if (y.G[b] == y.G[b]) { lo = y.beta; last = y; have = true; }
+            else hi = y.beta;
+          }
+          if (have) more[nm++] = last;  // between nodes i - 1 and i
+          break;
+        }
+      }
+      more[nm++] = nodes[i];
+    }
+    for (int i = 0; i < nm; ++i) nodes[i] = more[i];
+    nn = nm;
   }
   // The actual value of a known-positive entry.
   auto resolve = [&](int i, int b) {
@@ -606,31 +656,64 @@ inline contact_status contact_solve(const seta_params<T>& d, T Fn, T Ft, const c
     if (!(fabs(gr) <= tolG)) return;  // a jump of the shortest-path convention, not a root
     add_root(root, sp, sq);
   };
-  // Joins: where R1(alpha1) changes sign between nodes, locate theta1'(0) = 0 and insert it.
+  // Joins: where R1(alpha1) changes sign between nodes, theta1'(0) = 0 and the two base-rate
+  // branches meet; a beam state exists only where R1 >= 0. R1(beta) on the orbit is a
+  // trigonometric polynomial with |dR1/dbeta| <= K = (EI2/EI1)(N + N^2/(2 EA2)) + N + N^2/(2 EA1)
+  // (eqs 4, 12), so an interval whose end values satisfy |R1_l| + |R1_r| > K h has no sign change
+  // inside unless the ends differ in sign; otherwise it is bisected (R1 costs one sincos, no R_F).
+  // Each sign change becomes a join node, and each defined stretch between two of them gets a
+  // node of its own: no root next to a region without beam states is lost.
   {
+    const T K = fp.ratio * (fp.N + d.c2 * fp.N * fp.N / 2) + fp.N + d.c1 * fp.N * fp.N / 2;
     node merged[max_nodes];
     int nm = 0;
+    T changes[32];
+    int nc = 0;
+    auto R1_at = [&](T beta) { return fp.R1_on(beta, 1); };
+    auto collect = [&](auto&& self, T b0, T r0, T b1, T r1v, int depth) -> void {
+      if (nc >= 32 || !(r0 == r0) || !(r1v == r1v)) return;
+      if ((r0 >= 0) != (r1v >= 0)) {
+        T bj = 0;
+        auto f = [&](T beta) { return R1_at(beta); };
+        if (brent_root(f, b0, b1, r0, r1v, bj)) changes[nc++] = bj;
+        return;
+      }
+      if (depth >= 12 || fabs(r0) + fabs(r1v) > K * fabs(b1 - b0)) return;
+      const T bm = (b0 + b1) / 2, rm = R1_at(bm);
+      self(self, b0, r0, bm, rm, depth + 1);
+      self(self, bm, rm, b1, r1v, depth + 1);
+    };
+    auto join_node = [&](T bj, int sp) {
+      node x;
+      x.beta = bj;
+      x.sp = sp;
+      x.join = true;
+      x.r1 = 0;
+      typename FP::eval_out o;
+      // At the join q = 0: one state, on both branches.
+      const T g = fp.eval(bj, sp, 1, o, true, false) ? o.G : nan;
+      x.G[0] = x.G[1] = g;
+      return x;
+    };
     for (int i = 0; i < nn; ++i) {
-      if (i > 0) {
-        const bool def_prev = nodes[i - 1].G[0] == nodes[i - 1].G[0] || nodes[i - 1].G[1] == nodes[i - 1].G[1];
-        const bool def_here = nodes[i].G[0] == nodes[i].G[0] || nodes[i].G[1] == nodes[i].G[1];
-        if (def_prev != def_here && nm + 1 < max_nodes) {
-          const int sp = nodes[i].sp;
-          auto r1 = [&](T beta) { return fp.R1_on(beta, sp); };
-          const T b0 = nodes[i - 1].beta, b1 = nodes[i].beta;
-          const T f0 = r1(b0), f1 = r1(b1);
-          T bj = 0;
-          if ((f0 >= 0) != (f1 >= 0) && brent_root(r1, b0, b1, f0, f1, bj)) {
+      if (i > 0 && nm + 8 < max_nodes) {
+        nc = 0;
+        collect(collect, nodes[i - 1].beta, nodes[i - 1].r1, nodes[i].beta, nodes[i].r1, 0);
+        const int sp = nodes[i].sp;
+        T prev_b = nodes[i - 1].beta;
+        bool prev_def = nodes[i - 1].r1 >= 0;
+        for (int k = 0; k < nc && nm + 3 < max_nodes; ++k) {
+          if (k > 0 && prev_def) {  // a defined stretch between two joins: a node inside
             node x;
-            x.beta = bj;
+            x.beta = (prev_b + changes[k]) / 2;
             x.sp = sp;
-            x.join = true;
-            typename FP::eval_out o;
-            // At the join q = 0: one state, on both branches.
-            const T g = fp.eval(bj, sp, 1, o, true, false) ? o.G : nan;
-            x.G[0] = x.G[1] = g;
+            x.join = false;
+            fill(x);
             merged[nm++] = x;
           }
+          merged[nm++] = join_node(changes[k], sp);
+          prev_b = changes[k];
+          prev_def = !prev_def;
         }
       }
       merged[nm++] = nodes[i];
