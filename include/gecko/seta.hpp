@@ -1,4 +1,4 @@
-// gecko/seta.hpp — the two-level seta of directional adhesion (models.md §1) and the single
+// gecko/seta.hpp — the two-level seta of directional adhesion (docs/theory/two_level_seta.md) and the single
 // fiber of He et al. 2013.
 //
 //   TwoLevelSeta<T>, ft_max                      the design (defaults: the paper's reference scene)

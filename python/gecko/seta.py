@@ -1,6 +1,6 @@
 """gecko.seta — the two-level seta of directional adhesion and the classical peel lines.
 
-models.md §1. ``TwoLevelSeta`` holds a design (defaults: the paper's reference scene) and computes
+docs/theory/two_level_seta.md. ``TwoLevelSeta`` holds a design (defaults: the paper's reference scene) and computes
 its exact critical line of adhesion in C++ (Carlson forms of the elastica lengths, turning points
 and folds included, the GIL released)::
 
@@ -30,11 +30,23 @@ import numpy as np
 
 from . import _core
 from ._vectorize import error_code as _error_code, vectorised as _vectorised, with_index as _with_index
+from ._vectorize import check_count as _check_count, check_tolerance as _check_tolerance
+from ._vectorize import real_array as _real_array
 
 __all__ = [
     "TwoLevelSeta", "SingleFiber", "CriticalLine", "SetaCharacteristics", "kendall_fn", "rivlin_fn",
-    "critical_line_batch", "STATUS", "ContactState", "ContactStatus",
+    "critical_line_batch", "STATUS", "DESIGN_FIELDS", "SetaDesign", "CriticalStatus", "LineEnd",
+    "MinimumStatus", "ContactState", "ContactStatus",
 ]
+
+# The domain comes from C++ (src/bindings/seta_types.cpp): the design type with its fields, defaults
+# and admissible ranges, and the status codes as IntEnums (equal to the plain integers in arrays).
+SetaDesign = _core.SetaDesign
+#: the nine design fields in the order of every flat design array
+DESIGN_FIELDS = tuple(SetaDesign.fields)
+CriticalStatus = _core.CriticalStatus
+LineEnd = _core.LineEnd
+MinimumStatus = _core.MinimumStatus
 
 STATUS = {
     0: "converged",
@@ -66,19 +78,51 @@ _MIN_STATUS = {
     4: "not_certified",     # a minimum could not be refined or verified: min_fn etc. are NaN
 }
 
-def _flat(x):
-    a = np.asarray(x, dtype=np.float64)
+def _flat(x, name="Ft"):
+    a = _real_array(x, name)
     return a.shape, np.ascontiguousarray(a).reshape(-1)
 
 
 @dataclass
 class CriticalLine:
-    """The critical line at requested Ft values (same shape as ``Ft``); NaN where ``status != 0``.
+    """The critical line at requested Ft values, or the traced line.
 
-    For the traced line (``critical_line()`` without ``Ft``) every node has values: status 0 marks a
-    node re-solved by Newton to the state tolerance (1e-12), status 1 one that could not be (its
-    values are the continuation's, accurate to about the line tolerance 1e-10 only; drawn, not to be
-    used as a result)."""
+    With requested ``Ft`` every array has the shape of ``Ft`` and is NaN where ``status != 0``
+    (see :data:`gecko.STATUS`). For the traced line (``critical_line()`` without ``Ft``) every node
+    has values: status 0 marks a node re-solved by Newton to the state tolerance (1e-12), status 1
+    one that could not be (its values are the continuation's, accurate to about the line tolerance
+    1e-10 only; drawn, not to be used as a result).
+
+    Attributes
+    ----------
+    Ft, Fn : numpy.ndarray
+        Shear force and critical normal force (Fn < 0: a pull-off force).
+    theta_joint : numpy.ndarray
+        The spatula's angle at the joint, beta = theta2(l1), from the substrate normal.
+    status : numpy.ndarray of int
+        0 converged; other codes in :data:`gecko.STATUS`.
+    iterations : numpy.ndarray of int
+        Newton iterations (Jacobian evaluations).
+    theta_rate_joint, theta_rate_base : numpy.ndarray
+        theta2'(l1) and theta1'(0), the signed end rates of the solver's unknowns.
+    turning_points_beam, turning_points_spatula : numpy.ndarray of int
+        Sign changes of theta' inside each segment.
+    folds : list
+        Traced line only: where it folds back.
+    end : str or None
+        Traced line only: why it stopped.
+    branch : numpy.ndarray or None
+        Traced line only: the branch index of each node.
+    end_code : LineEnd or None
+        Traced line only: ``end`` as a :class:`LineEnd` member (compare these in code).
+
+    Examples
+    --------
+    >>> import gecko
+    >>> line = gecko.TwoLevelSeta().critical_line(Ft=[0.0, 5.0])
+    >>> line.Fn.round(6), line.status
+    (array([ 0.249904, -2.448406]), array([0, 0], dtype=int32))
+    """
 
     Ft: np.ndarray
     Fn: np.ndarray
@@ -93,6 +137,7 @@ class CriticalLine:
     folds: list = field(default_factory=list)
     end: Optional[str] = None
     branch: Optional[np.ndarray] = None
+    end_code: Optional[LineEnd] = None   # ``end`` as a LineEnd member (code compares these)
 
     def __len__(self) -> int:
         return int(np.size(self.Ft))
@@ -100,7 +145,53 @@ class CriticalLine:
 
 @dataclass
 class SetaCharacteristics:
-    """Characteristic quantities (models.md §1) and their small-deformation counterparts."""
+    """Characteristic quantities of a seta, with their small-deformation counterparts.
+
+    See docs/theory/two_level_seta.md, "The critical line of adhesion" and "Small-deformation
+    approximations" (paper 001 eqs 16, 18-22).
+
+    Attributes
+    ----------
+    fn0 : float
+        (Fn)0, the critical Fn at Ft = 0 (> 0: not sticky at rest).
+    slope_k : float
+        dFn/dFt at Ft = 0, the exact tangent of the line (negative; the paper plots 1/abs(k)).
+    min_fn, ft_at_min_fn : float
+        The minimum of Fn along the line followed from Ft = 0, and where it occurs.
+    min_fn_interior : bool
+        Whether the minimum is an interior stationary point.
+    min_status : str
+        "stationary", "range_start", "range_end", "line_incomplete" or "not_certified" (NaN values).
+    slope_at_min_fn : float
+        dFn/dFt at the minimum (about 0 for "stationary").
+    max_pull_off : float
+        max(0, -min_fn).
+    ft_max : float
+        (Ft)max = sqrt(2 EA2 w).
+    ft_at_line_end, fn_at_line_end : float
+        Where the followed line ended.
+    sticky_at_rest : bool
+        (Fn)0 < 0.
+    end : str
+        Why the line ended.
+    folds : list
+        Folds met along the line.
+    small_fn0, small_slope_k, small_contact_length : float
+        The small-deformation theory's (Fn)0, k and contact length at rest (paper 001 eqs 7, 19-21).
+    small_non_sticky : bool
+        Its non-sticky criterion (paper 001 eq 22).
+    end_code : LineEnd or None
+        ``end`` as a :class:`LineEnd` member.
+    min_status_code : MinimumStatus or None
+        ``min_status`` as a :class:`MinimumStatus` member.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> c = gecko.TwoLevelSeta().characteristics()
+    >>> round(c.fn0, 4), round(c.max_pull_off, 4), c.min_status
+    (0.2499, 2.8024, 'stationary')
+    """
 
     fn0: float
     slope_k: float
@@ -120,6 +211,8 @@ class SetaCharacteristics:
     small_slope_k: float
     small_contact_length: float
     small_non_sticky: bool
+    end_code: Optional[LineEnd] = None              # ``end`` as a LineEnd member
+    min_status_code: Optional[MinimumStatus] = None  # ``min_status`` as a MinimumStatus member
 
 
 class ContactStatus(enum.IntEnum):
@@ -182,14 +275,45 @@ _CONTACT_INT = ("turning_points", "turning_points_beam", "turning_points_spatula
 
 
 class TwoLevelSeta:
-    """A two-level seta design (models.md §1); the defaults are the paper's reference scene.
+    """A two-level seta design; the defaults are the paper's reference scene.
 
-    EI1, EI2: bending stiffnesses of beam and spatula; EA1, EA2: axial stiffnesses (``math.inf``:
-    inextensible); l1, l2: lengths; alpha1: base angle in (0, pi/2); alpha2 >= 0: kink at the joint,
-    alpha1 + alpha2 < pi/2; w: work of adhesion. Invalid values raise ``ValueError`` at construction.
+    A beam (level 1) clamped at the base angle ``alpha1`` carries a spatula (level 2) kinked by
+    ``alpha2``; the spatula is in side contact with a rigid substrate (docs/theory/two_level_seta.md,
+    paper 001). Non-dimensional defaults: w = 1, l1 = 1.
+
+    Parameters
+    ----------
+    EI1, EI2 : float, optional
+        Bending stiffnesses of beam and spatula (defaults 5 and 2), > 0.
+    EA1, EA2 : float, optional
+        Axial stiffnesses (defaults inf and 50), > 0; ``math.inf`` is the inextensible limit.
+    l1, l2 : float, optional
+        Lengths of beam and spatula (defaults 1 and 0.1), > 0.
+    alpha1 : float, optional
+        Base angle from the substrate normal, in (0, pi/2) (default pi/6).
+    alpha2 : float, optional
+        Kink at the joint, >= 0 with alpha1 + alpha2 < pi/2 (default pi/6).
+    w : float, optional
+        Work of adhesion per unit length, > 0 (default 1).
+
+    Raises
+    ------
+    ValueError
+        If a parameter is out of its range; the message names it and the range.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> seta = gecko.TwoLevelSeta(alpha2=0.3)
+    >>> seta.ft_max
+    10.0
+    >>> gecko.TwoLevelSeta(EI1=-1)
+    Traceback (most recent call last):
+    ...
+    ValueError: gecko.TwoLevelSeta: EI1 = -1 is out of range: need 0 < EI1 < infinity
     """
 
-    _FIELDS = ("EI1", "EI2", "EA1", "EA2", "l1", "l2", "alpha1", "alpha2", "w")
+    _FIELDS = DESIGN_FIELDS
 
     def __init__(self, EI1: float = 5.0, EI2: float = 2.0, EA1: float = math.inf, EA2: float = 50.0,
                  l1: float = 1.0, l2: float = 0.1, alpha1: float = math.pi / 6,
@@ -215,13 +339,43 @@ class TwoLevelSeta:
                       ft_end: Optional[float] = None, resolve_nodes: bool = True) -> CriticalLine:
         """The critical line of adhesion.
 
-        With ``Ft`` (any shape): the state at each Ft, on the line followed from Ft = 0 (the first
-        crossing; negative Ft along the line followed towards negative Ft), each solved by Newton to
-        ``tolerance`` (default 1e-12, scaled step). Without ``Ft``: the nodes of the continuation from
-        Ft = 0 to ``ft_end`` (default (Ft)max, or 3 sqrt(EI1 w)/l1 for EA2 = inf), through folds,
-        with ``folds`` and ``end`` (why the line stopped); each node re-solved to the state tolerance
-        (``status`` 0) or marked (1). ``resolve_nodes=False`` returns the continuation's raw nodes
-        (status 1, accurate to its 1e-10 step test; faster, for drawing only).
+        Parameters
+        ----------
+        Ft : array_like, optional
+            Shear forces, any shape. Each state is the first crossing of that Ft on the line followed
+            from Ft = 0 (negative Ft: along the line followed towards negative Ft), solved by Newton.
+            Without ``Ft``: the nodes of the continuation itself, through folds.
+        errors : {"raise", "nan"}, optional
+            Bad input raises ``ValueError`` (default) or gives status 5 and NaN for that element.
+        tolerance : float, optional
+            Newton's tolerance on the scaled step (default 1e-12).
+        ft_end : float, optional
+            Traced line only: where to stop (default (Ft)max, or 3 sqrt(EI1 w)/l1 for EA2 = inf).
+        resolve_nodes : bool, optional
+            Traced line only: re-solve every node to the state tolerance (default True); False returns
+            the continuation's raw nodes (status 1, for drawing).
+
+        Returns
+        -------
+        CriticalLine
+            Arrays of the shape of ``Ft`` (or one entry per node), with a status for every state.
+
+        Raises
+        ------
+        ValueError
+            If an Ft is out of range (beyond (Ft)max) with ``errors="raise"``, or ``resolve_nodes=False``
+            is combined with ``Ft``.
+
+        Examples
+        --------
+        >>> import gecko
+        >>> seta = gecko.TwoLevelSeta()
+        >>> seta.critical_line(Ft=[0.0, 5.0]).Fn.round(6)
+        array([ 0.249904, -2.448406])
+        >>> seta.critical_line().end
+        'reached (Ft)max = sqrt(2 EA2 w)'
+        >>> seta.critical_line(Ft=[11.0], errors="nan").status
+        array([5], dtype=int32)
         """
         params = self._params()
         if Ft is None:
@@ -233,13 +387,12 @@ class TwoLevelSeta:
                                 turning_points_beam=d["turning_points_beam"],
                                 turning_points_spatula=d["turning_points_spatula"],
                                 folds=list(d["folds"]), end=_LINE_END.get(d["end"], str(d["end"])),
-                                branch=d["branch"])
+                                branch=d["branch"], end_code=LineEnd(d["end"]))
         if not resolve_nodes:
             raise ValueError("resolve_nodes=False applies to the traced line only (critical_line() without Ft); "
                              "states at requested Ft are always solved to the tolerance")
         shape, flat = _flat(Ft)
-        d = _core.seta_critical_line_at(params, flat, _error_code(errors),
-                                        math.nan if tolerance is None else float(tolerance))
+        d = _core.seta_critical_line_at(params, flat, _error_code(errors), _check_tolerance(tolerance))
 
         def shaped(a):
             return a.reshape(shape)
@@ -316,58 +469,215 @@ class TwoLevelSeta:
                             **fields)
 
     def solve(self, Ft: float, guess=None, *, tolerance: Optional[float] = None, max_iterations: int = 40) -> dict:
-        """One critical state at ``Ft``. ``guess``: (Fn, theta_joint) or (Fn, theta_joint,
-        theta_rate_joint, theta_rate_base); without it the line is followed from Ft = 0."""
-        tol = math.nan if tolerance is None else float(tolerance)
+        """One critical state at ``Ft``.
+
+        Parameters
+        ----------
+        Ft : float
+            The shear force.
+        guess : sequence of float, optional
+            (Fn, theta_joint), or (Fn, theta_joint, theta_rate_joint, theta_rate_base). Without it the
+            line is followed from Ft = 0 to Ft.
+        tolerance : float, optional
+            Newton's tolerance on the scaled step (default 1e-12).
+        max_iterations : int, optional
+            Newton's iteration budget with a guess (default 40).
+
+        Returns
+        -------
+        dict
+            ``Ft, Fn, theta_joint, status, iterations, theta_rate_joint, theta_rate_base,
+            turning_points_beam, turning_points_spatula``.
+
+        Raises
+        ------
+        ValueError
+            If ``Ft`` is out of range.
+
+        Examples
+        --------
+        >>> import gecko
+        >>> state = gecko.TwoLevelSeta().solve(5.0, guess=(-2.4, 1.49))
+        >>> round(state["Fn"], 6), state["status"]
+        (-2.448406, 0)
+        """
+        tol = _check_tolerance(tolerance)
+        max_iterations = _check_count(max_iterations, "max_iterations")
         if guess is None:
             return _core.seta_solve(self._params(), float(Ft), tolerance=tol, max_iterations=max_iterations)
         g = [float(x) for x in guess] + [math.nan] * (4 - len(guess))
         return _core.seta_solve(self._params(), float(Ft), g[0], g[1], g[2], g[3], tol, max_iterations)
 
     def characteristics(self, ft_end: Optional[float] = None) -> SetaCharacteristics:
-        """(Fn)0, slope k, max pull-off and its Ft, (Ft)max, stickiness at rest, with the
-        small-deformation (eqs 7, 18-22) values beside them. ``min_status`` says where the minimum
-        of Fn lies and whether it was verified ("stationary": dFn/dFt = 0 at ``ft_at_min_fn``,
-        ``slope_at_min_fn`` ~ 0; "not_certified": NaN values, never a traced node's Fn)."""
+        """(Fn)0, slope k, maximum pull-off and its Ft, (Ft)max, stickiness at rest.
+
+        The small-deformation values (paper 001 eqs 7, 18-22) come alongside. ``min_status`` says where
+        the minimum of Fn lies and whether it was verified ("stationary": dFn/dFt = 0 at
+        ``ft_at_min_fn``; "not_certified": NaN values, never a traced node's Fn).
+
+        Parameters
+        ----------
+        ft_end : float, optional
+            Follow the line only up to this Ft (default (Ft)max); 0 solves the natural state only.
+
+        Returns
+        -------
+        SetaCharacteristics
+
+        Raises
+        ------
+        ValueError
+            If ``ft_end`` is out of range.
+
+        Examples
+        --------
+        >>> import gecko
+        >>> c = gecko.TwoLevelSeta().characteristics()
+        >>> round(c.fn0, 4), round(c.slope_k, 4), round(c.ft_at_min_fn, 4), c.sticky_at_rest
+        (0.2499, -0.7414, 7.1232, False)
+        """
         d = _core.seta_characteristics(self._params(), math.nan if ft_end is None else float(ft_end))
         d = dict(d)
+        d["end_code"], d["min_status_code"] = LineEnd(d["end"]), MinimumStatus(d["min_status"])
         d["end"] = _LINE_END.get(d["end"], str(d["end"]))
         d["min_status"] = _MIN_STATUS.get(d["min_status"], str(d["min_status"]))
         d["folds"] = list(d["folds"])
         return SetaCharacteristics(**d)
 
     def sensitivities(self, Ft) -> dict:
-        """Exact derivatives of the critical state with respect to the design, by implicit
-        differentiation of the converged residual: ``dFn`` and ``dtheta_joint`` of shape
-        (len(Ft), 9), columns in the order of ``TwoLevelSeta._FIELDS`` (EI1, EI2, EA1, EA2, l1, l2,
-        alpha1, alpha2, w); Ft held fixed; NaN rows where ``status != 0``."""
-        ft = np.ascontiguousarray(np.atleast_1d(np.asarray(Ft, dtype=np.float64)).reshape(-1))
+        """Exact derivatives of the critical state with respect to the design.
+
+        By implicit differentiation of the converged equations (no finite differences), with Ft held
+        fixed.
+
+        Parameters
+        ----------
+        Ft : array_like
+            Shear forces (flattened).
+
+        Returns
+        -------
+        dict
+            ``dFn`` and ``dtheta_joint`` of shape (len(Ft), 9), columns in the order of ``parameters``
+            (EI1, EI2, EA1, EA2, l1, l2, alpha1, alpha2, w); ``Fn`` and ``status``; NaN rows where
+            ``status != 0``.
+
+        Examples
+        --------
+        >>> import gecko
+        >>> d = gecko.TwoLevelSeta().sensitivities([0.0, 5.0])
+        >>> d["dFn"].shape, d["parameters"][7]
+        ((2, 9), 'alpha2')
+        """
+        ft = np.ascontiguousarray(np.atleast_1d(_real_array(Ft, "Ft")).reshape(-1))
         d = dict(_core.seta_sensitivities(self._params(), ft))
         d["parameters"] = list(self._FIELDS)
         return d
 
     def shape(self, Ft: float, steps: int = 200) -> dict:
-        """Deformed shape of the critical state at ``Ft`` (computed only when asked for): arrays
-        ``s, x, z, theta`` from the base (s = 0) to the contact edge (z = 0), by RK4 integration
-        of the governing equations from the solved base state (``steps`` per segment, O(h^4));
-        ``closing_error`` = theta(a) - pi/2 of the integration."""
+        """The deformed shape of the critical state at ``Ft``, computed only when asked for.
+
+        RK4 integration of the governing equations (paper 001 eqs 1-5) from the solved base state,
+        ``steps`` per segment, error O(h^4).
+
+        Parameters
+        ----------
+        Ft : float
+            The shear force.
+        steps : int, optional
+            Integration steps per segment (default 200).
+
+        Returns
+        -------
+        dict
+            Arrays ``s, x, z, theta`` from the base (s = 0) to the contact edge (z = 0), with
+            ``closing_error`` = theta(a) - pi/2 of the integration, ``Fn`` and ``status``.
+
+        Examples
+        --------
+        >>> import gecko
+        >>> sh = gecko.TwoLevelSeta().shape(2.0)
+        >>> float(sh["z"][-1]), abs(sh["closing_error"]) < 1e-6
+        (0.0, True)
+        """
         return dict(_core.seta_shape(self._params(), float(Ft), int(steps)))
 
     def small_deformation(self) -> dict:
-        """The linear theory (eqs 7, 18-22): fn0, slope_k, contact_length, non_sticky."""
+        """The small-deformation (linear) theory, paper 001 eqs 7 and 18-22.
+
+        Qualitative by the paper's own account: at the reference scene (Fn)0 = 0.34 against the exact
+        0.2499.
+
+        Returns
+        -------
+        dict
+            ``fn0``, ``slope_k``, ``contact_length`` (at rest; outside [0, l2]: no contact at rest),
+            ``non_sticky`` (eq 22).
+
+        Examples
+        --------
+        >>> import gecko
+        >>> d = gecko.TwoLevelSeta().small_deformation()
+        >>> round(d["fn0"], 4), d["non_sticky"]
+        (0.3396, True)
+        """
         return dict(_core.seta_small_deformation(self._params()))
 
     def small_deformation_fn(self, Ft):
-        """Fn on the linear critical line (eq 18)."""
+        """Fn on the linear critical line (paper 001 eq 18), Fn = (Fn)0 + k Ft.
+
+        Parameters
+        ----------
+        Ft : float or array_like
+            Shear forces.
+
+        Returns
+        -------
+        float or numpy.ndarray
+            Of the shape of ``Ft``.
+
+        Examples
+        --------
+        >>> import gecko
+        >>> round(gecko.TwoLevelSeta().small_deformation_fn(1.0), 4)
+        -1.0686
+        """
         d = self.small_deformation()
         out = d["fn0"] + d["slope_k"] * np.asarray(Ft, dtype=np.float64)
         return float(out) if np.ndim(out) == 0 else out
 
 
 class SingleFiber:
-    """The single-level fiber of He et al. 2013 (models.md §1, Fig 4): one segment of length l,
-    bending stiffness EI, axial stiffness EA (``math.inf``: inextensible), base angle alpha in
-    (0, pi/2), work of adhesion w. Defaults: EI = 1/2, EA = 50, l = 1, alpha = pi/3, w = 1.
+    """The single-level fiber of He et al. 2013 (paper 001 Fig 4).
+
+    One segment of length ``l``, bending stiffness ``EI``, axial stiffness ``EA``, base angle
+    ``alpha``, in side contact with the substrate (docs/theory/two_level_seta.md, "Single-level
+    fiber").
+
+    Parameters
+    ----------
+    EI : float, optional
+        Bending stiffness (default 1/2), > 0.
+    EA : float, optional
+        Axial stiffness (default 50), > 0; ``math.inf``: inextensible.
+    l : float, optional
+        Length (default 1), > 0.
+    alpha : float, optional
+        Base angle in (0, pi/2) (default pi/3, the reference seta's alpha1 + alpha2).
+    w : float, optional
+        Work of adhesion (default 1), > 0.
+
+    Raises
+    ------
+    ValueError
+        If a parameter is out of its range.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> fiber = gecko.SingleFiber()
+    >>> fiber.critical_line([0.0, 1.0]).Fn.round(5)
+    array([-1.62417, -1.9766 ])
     """
 
     _FIELDS = ("EI", "EA", "l", "alpha", "w")
@@ -389,31 +699,90 @@ class SingleFiber:
         return math.sqrt(2 * self.EA * self.w)
 
     def critical_line(self, Ft, *, errors: str = "raise", tolerance: Optional[float] = None) -> CriticalLine:
-        """The fiber's critical line at ``Ft`` (any shape), followed from Ft = 0; ``theta_joint`` is NaN
-        (no joint) and the fiber's turning points are in ``turning_points_beam``."""
+        """The fiber's critical line at ``Ft``, followed from Ft = 0.
+
+        Parameters
+        ----------
+        Ft : array_like
+            Shear forces, any shape.
+        errors : {"raise", "nan"}, optional
+            Bad input raises ``ValueError`` (default) or gives status 5 and NaN.
+        tolerance : float, optional
+            Newton's tolerance (default 1e-12).
+
+        Returns
+        -------
+        CriticalLine
+            ``theta_joint`` is NaN (no joint); the fiber's turning points are in
+            ``turning_points_beam``.
+
+        Raises
+        ------
+        ValueError
+            If an Ft is out of range with ``errors="raise"``.
+
+        Examples
+        --------
+        >>> import gecko
+        >>> line = gecko.SingleFiber(EI=1.0).critical_line([0.0])
+        >>> bool(line.status[0] == 0)
+        True
+        """
         shape, flat = _flat(Ft)
-        d = _core.fiber_critical_line_at(self._params(), flat, _error_code(errors),
-                                         math.nan if tolerance is None else float(tolerance))
+        d = _core.fiber_critical_line_at(self._params(), flat, _error_code(errors), _check_tolerance(tolerance))
         return CriticalLine(Ft=flat.reshape(shape), **{k: v.reshape(shape) for k, v in d.items()})
 
 
 def critical_line_batch(designs, Ft, *, threads: int = 1, errors: str = "raise",
                         tolerance: Optional[float] = None) -> CriticalLine:
-    """Many designs x many Ft in one call, multithreaded (the GIL released).
+    """Many designs x many Ft in one call, on several threads (the GIL released).
 
-    ``designs``: a sequence of ``TwoLevelSeta`` or an array of shape (n, 9) in the field order
-    (EI1, EI2, EA1, EA2, l1, l2, alpha1, alpha2, w). ``Ft``: 1-D. Returns arrays of shape
-    (n, len(Ft)); the result does not depend on ``threads`` (each design is solved independently).
+    Parameters
+    ----------
+    designs : sequence of TwoLevelSeta or array_like of shape (n, 9)
+        The designs; arrays in the field order (EI1, EI2, EA1, EA2, l1, l2, alpha1, alpha2, w).
+    Ft : array_like
+        Shear forces, 1-D.
+    threads : int, optional
+        Threads (default 1); the result does not depend on it.
+    errors : {"raise", "nan"}, optional
+        Bad input raises ``ValueError`` (default) or gives status 5 in its entries.
+    tolerance : float, optional
+        Newton's tolerance (default 1e-12).
+
+    Returns
+    -------
+    CriticalLine
+        Arrays of shape (n, len(Ft)).
+
+    Raises
+    ------
+    ValueError
+        If a design or an Ft is invalid with ``errors="raise"``.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> designs = [gecko.TwoLevelSeta(), gecko.TwoLevelSeta(alpha2=0.3)]
+    >>> gecko.critical_line_batch(designs, [0.0, 2.0], threads=2).Fn.round(4)
+    array([[ 0.2499, -1.0829],
+           [ 2.3606,  1.382 ]])
     """
     if isinstance(designs, TwoLevelSeta):
         designs = [designs]
     if len(designs) and isinstance(designs[0], TwoLevelSeta):
         arr = np.stack([d._params() for d in designs])
     else:
-        arr = np.asarray(designs, dtype=np.float64).reshape(-1, 9)
-    ft = np.ascontiguousarray(np.asarray(Ft, dtype=np.float64).reshape(-1))
-    d = _core.seta_batch(np.ascontiguousarray(arr.reshape(-1)), ft, _error_code(errors), int(threads),
-                         math.nan if tolerance is None else float(tolerance))
+        arr = _real_array(designs, "designs")
+        if arr.ndim == 1 and arr.size == 9:  # one design
+            arr = arr.reshape(1, 9)
+        if arr.ndim != 2 or arr.shape[1] != 9:  # never reinterpret a table of another width
+            raise ValueError(f"designs: need a table of width 9 (EI1, EI2, EA1, EA2, l1, l2, alpha1, alpha2, w), "
+                             f"one row per design; got shape {arr.shape} (width "
+                             f"{arr.shape[-1] if arr.ndim else 0})")
+    ft = np.ascontiguousarray(_real_array(Ft, "Ft").reshape(-1))
+    d = _core.seta_batch(np.ascontiguousarray(arr.reshape(-1)), ft, _error_code(errors),
+                         _check_count(threads, "threads", 4096), _check_tolerance(tolerance))
     shape = (arr.shape[0], ft.size)
 
     def shaped(a):
@@ -428,13 +797,71 @@ def critical_line_batch(designs, Ft, *, threads: int = 1, errors: str = "raise",
 
 
 def kendall_fn(Ft, EA, w, *, errors: str = "raise"):
-    """Kendall's peel line (eq 17): the tensile critical Fn (<= 0) of an extensible film at shear Ft.
+    """Kendall's peel line (paper 001 eq 17): the tensile critical Fn of an extensible film.
 
-    Defined for -2w/(2 + sqrt(4 + 2w/EA)) <= Ft <= sqrt(2 EA w); EA = inf gives Rivlin's line.
+    Solves sqrt(Fn^2 + Ft^2) + (Fn^2 + Ft^2)/(2 EA) - Ft - w = 0 for Fn <= 0; broadcasts like a
+    numpy ufunc.
+
+    Parameters
+    ----------
+    Ft : array_like
+        Shear force, -2w/(2 + sqrt(4 + 2w/EA)) <= Ft <= sqrt(2 EA w).
+    EA : array_like
+        Axial stiffness of the film, > 0; inf gives Rivlin's line.
+    w : array_like
+        Work of adhesion, > 0.
+    errors : {"raise", "nan"}, optional
+        Out-of-range input raises (default) or gives NaN.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The critical normal force (<= 0).
+
+    Raises
+    ------
+    ValueError
+        If an argument is out of range with ``errors="raise"``.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> gecko.kendall_fn([0.0, 10.0], 50.0, 1.0).round(6)
+    array([-0.990195,  0.      ])
     """
     return _vectorised(_core.kendall_fn, Ft, EA, w, errors=errors)
 
 
 def rivlin_fn(Ft, w, *, errors: str = "raise"):
-    """Rivlin's peel line (eq 17): Fn = -sqrt(w^2 + 2 w Ft), Ft >= -w/2."""
+    """Rivlin's peel line (paper 001 eq 17): Fn = -sqrt(w^2 + 2 w Ft) for an inextensible film.
+
+    Parameters
+    ----------
+    Ft : array_like
+        Shear force, Ft >= -w/2.
+    w : array_like
+        Work of adhesion, > 0.
+    errors : {"raise", "nan"}, optional
+        Out-of-range input raises (default) or gives NaN.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        The critical normal force (<= 0).
+
+    Raises
+    ------
+    ValueError
+        If an argument is out of range with ``errors="raise"``.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> float(gecko.rivlin_fn(4.0, 1.0))
+    -3.0
+    >>> gecko.rivlin_fn(-1.0, 1.0)
+    Traceback (most recent call last):
+    ...
+    ValueError: gecko::rivlin_fn: Ft = -1 is out of range: need -w/2 <= Ft < infinity
+    """
     return _vectorised(_core.rivlin_fn, Ft, w, errors=errors)

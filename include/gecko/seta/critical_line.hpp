@@ -1,10 +1,10 @@
 // gecko/seta/critical_line.hpp — the critical line of adhesion of the two-level seta.
 //
-// models.md §1 "Critical line of adhesion": the curve of critical (Fn, Ft), followed from the
+// docs/theory/two_level_seta.md "Critical line of adhesion": the curve of critical (Fn, Ft), followed from the
 // natural state at Ft = 0 by pseudo-arclength continuation (gecko/seta/detail/continuation.hpp)
 // through folds, up to (Ft)max = sqrt(2 EA2 w) or to where it ends (reported in `end`).
 // The natural state needs no guess: it is reached by homotopy from the small-deformation limit
-// (models.md eq 18), scaling the angle deficit pi/2 - alpha1 - alpha2 by lambda and w by
+// (docs/theory/two_level_seta.md, paper 001 eq 18), scaling the angle deficit pi/2 - alpha1 - alpha2 by lambda and w by
 // lambda^2 (the linear theory is exact as lambda -> 0), lambda = 0.02 -> 1.
 // critical_line_at gives the line at requested Ft values: the first crossing of each Ft along
 // the line from Ft = 0 (negative Ft: along the line followed from Ft = 0 towards negative Ft),
@@ -43,6 +43,10 @@ struct critical_line_options {
   // Jacobian evaluation per node; false returns the raw nodes with status not_converged (all but
   // the natural state).
   bool resolve_nodes = true;
+  // States whose largest axial strain |T|/EA exceeds this are inadmissible (status 7, see
+  // gecko/seta/admissibility.hpp); the default is no limit (the paper's reference design reaches
+  // 20 % strain at (Ft)max).
+  T strain_limit = std::numeric_limits<T>::infinity();
 };
 
 template <class T>
@@ -53,7 +57,13 @@ struct critical_line_point {
   // converged: re-solved to critical_line_options::tolerance (or the natural state, or the
   // landed end of the line). not_converged: the node could not be re-solved; its values are the
   // continuation's, accurate to about line_tolerance only, and kept so the line can be drawn.
+  // inadmissible: a re-solved node where the seta crosses the substrate (or exceeds the strain
+  // limit); its values are kept so the line can be drawn.
   critical_status status;
+  // Admissibility of converged and inadmissible nodes (see critical_state); NaN otherwise.
+  T min_z = std::numeric_limits<T>::quiet_NaN();
+  T min_z_at = std::numeric_limits<T>::quiet_NaN();
+  T max_axial_strain = std::numeric_limits<T>::quiet_NaN();
 };
 
 template <class T>
@@ -141,6 +151,22 @@ inline critical_line_point<T> line_point(const System& sys, const line_node<T, S
   p.theta_rate_base = sys.rate_base(node.z);
   sys.turning_points(plan, node.z, node.Ft, p.turning_points_beam, p.turning_points_spatula);
   p.branch = node.branch;
+  if (status == critical_status::converged) {
+    critical_state<T> st;
+    st.Fn = p.Fn;
+    st.Ft = p.Ft;
+    st.theta_joint = p.theta_joint;
+    st.theta_rate_joint = p.theta_rate_joint;
+    st.theta_rate_base = p.theta_rate_base;
+    st.turning_points_beam = p.turning_points_beam;
+    st.turning_points_spatula = p.turning_points_spatula;
+    st.status = status;
+    apply_admissibility(sys, st);
+    p.status = st.status;
+    p.min_z = st.min_z;
+    p.min_z_at = st.min_z_at;
+    p.max_axial_strain = st.max_axial_strain;
+  }
   return p;
 }
 
@@ -351,7 +377,7 @@ inline critical_status resolve_node(const System& sys, const traced_line<System>
 template <class Policy, bool E1, bool E2, class T>
 inline critical_line_result<T> critical_line_imp(const TwoLevelSeta<T>& s, const critical_line_options<T>& opt) {
   using System = seta_system<T, Policy, E1, E2>;
-  const System sys(make_seta_params(s));
+  const System sys(make_seta_params(s), opt.strain_limit);
   const T end = opt.ft_end == opt.ft_end ? opt.ft_end : default_ft_end(s);
   using std::fabs; using std::sqrt;
   const T scale = std::max(fabs(end), sqrt(s.EI1 * s.w) / s.l1);
@@ -381,7 +407,7 @@ template <class Policy, bool E1, bool E2, class T>
 inline void critical_line_at_imp(const TwoLevelSeta<T>& s, const T* Ft, std::size_t count,
                                  const critical_line_options<T>& opt, critical_state<T>* out) {
   using System = seta_system<T, Policy, E1, E2>;
-  const System sys(make_seta_params(s));
+  const System sys(make_seta_params(s), opt.strain_limit);
   std::vector<std::size_t> pos, neg;
   T hi = 0, lo = 0;
   for (std::size_t i = 0; i < count; ++i) {

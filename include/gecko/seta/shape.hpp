@@ -1,7 +1,7 @@
 // gecko/seta/shape.hpp — the deformed shape x(s), z(s) of a solved critical state, computed only
 // when asked for (the critical line never needs it).
 //
-// models.md §1 governing equations (paper eqs 1-5): from the solved base state theta1(0) = alpha1,
+// docs/theory/two_level_seta.md governing equations (paper eqs 1-5): from the solved base state theta1(0) = alpha1,
 // theta1'(0) (critical_state::theta_rate_base) the elastica is integrated along s with classical
 // RK4 (state theta, theta', x, z; dx/ds = (1 + T/EA) sin theta, dz/ds = -(1 + T/EA) cos theta,
 // T = Ft sin theta - Fn cos theta), through the joint (theta2 = theta1 + alpha2,

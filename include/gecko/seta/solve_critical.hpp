@@ -1,6 +1,6 @@
 // gecko/seta/solve_critical.hpp — one critical state of the two-level seta by Newton.
 //
-// models.md §1 "Critical line of adhesion": for a given Ft, solve the length equations (with the
+// docs/theory/two_level_seta.md "Critical line of adhesion": for a given Ft, solve the length equations (with the
 // first-integral identities of gecko/seta/critical_residual.hpp) for Fn and beta = theta2(l1),
 // from a guess. Newton with the exact Jacobian (dual numbers; R_F's gradient is -R_D/6) and
 // affine-invariant damping (gecko/seta/detail/newton.hpp). After convergence the Carlson plan of
@@ -15,6 +15,7 @@
 
 #include "gecko/core/error.hpp"
 #include "gecko/core/policy.hpp"
+#include "gecko/seta/admissibility.hpp"
 #include "gecko/seta/critical_residual.hpp"
 #include "gecko/seta/detail/newton.hpp"
 #include "gecko/seta/detail/seta_system.hpp"
@@ -22,9 +23,12 @@
 
 namespace gecko {
 
-// What happened to one critical-state solve. 0 means a verified solution; everything else comes
-// with NaN in Fn and theta_joint, except inadmissible (7), which keeps the solved Fn and
-// theta_joint so that the state can be drawn.
+// What happened to one critical-state solve. 0 means a verified solution that is physically
+// admissible (gecko/seta/admissibility.hpp); everything else comes with NaN in Fn and theta_joint,
+// except inadmissible (7), which keeps the solved Fn, theta_joint, rates, turning points, min_z and
+// max_axial_strain so that the state can be drawn and inspected: it solves paper 001 eq (15) but
+// the seta crosses the substrate there (or exceeds the caller's strain limit), so it is no state
+// of a real seta.
 enum class critical_status : int {
   converged = 0,
   not_converged = 1,      // Newton did not converge from the guess it was given
@@ -49,7 +53,26 @@ struct critical_state {
   T theta_rate_base = std::numeric_limits<T>::quiet_NaN();   // theta1'(0)
   int turning_points_beam = -1;                               // sign changes of theta' inside
   int turning_points_spatula = -1;
+  // Admissibility (gecko/seta/admissibility.hpp), for converged and inadmissible states: the
+  // lowest height of the seta above the substrate over [0, a] (0: the contact edge is the lowest
+  // point; negative: it crosses the substrate), the arc length s where it is, and the largest
+  // axial strain |T|/EA along the seta. NaN where no state was solved (or the check failed).
+  T min_z = std::numeric_limits<T>::quiet_NaN();
+  T min_z_at = std::numeric_limits<T>::quiet_NaN();
+  T max_axial_strain = std::numeric_limits<T>::quiet_NaN();
 };
+
+// The admissibility check of a solved state (status converged or inadmissible).
+template <class T>
+inline admissibility_result<T> admissibility_check(const TwoLevelSeta<T>& seta, const critical_state<T>& state,
+                                                   T strain_limit = std::numeric_limits<T>::infinity()) {
+  if (state.status != critical_status::converged && state.status != critical_status::inadmissible)
+    return admissibility_result<T>();
+  const seta_pose<T> pose{state.Fn, state.Ft, state.theta_joint, state.theta_rate_base, state.theta_rate_joint,
+                          state.turning_points_beam, state.turning_points_spatula,
+                          std::numeric_limits<T>::quiet_NaN()};
+  return admissibility_check(seta, pose, strain_limit);
+}
 
 // A starting point: Fn and beta, optionally the rates (NaN: the monotone branch, rates >= 0).
 template <class T>
@@ -66,6 +89,9 @@ struct solve_options {
   // below this; the accepted state is then accurate to far better (quadratic convergence).
   T tolerance = T(1e-12);
   int max_iterations = 40;
+  // States whose largest axial strain |T|/EA exceeds this are inadmissible (status 7); the default
+  // is no limit (the paper's reference design reaches 20 % strain at (Ft)max).
+  T strain_limit = std::numeric_limits<T>::infinity();
 };
 
 namespace detail {
@@ -94,6 +120,22 @@ inline critical_status solve_with_plans(const System& sys, typename System::vec&
   return critical_status::not_converged;
 }
 
+// Admissibility of a converged state: sets min_z, min_z_at, max_axial_strain, and status 7 where
+// the seta crosses the substrate or exceeds the strain limit (or the check could not be made).
+template <class System, class T>
+inline void apply_admissibility(const System&, critical_state<T>&) {}
+
+template <class T, class Policy, bool E1, bool E2>
+inline void apply_admissibility(const seta_system<T, Policy, E1, E2>& sys, critical_state<T>& r) {
+  const seta_pose<T> pose{r.Fn, r.Ft, r.theta_joint, r.theta_rate_base, r.theta_rate_joint,
+                          r.turning_points_beam, r.turning_points_spatula, std::numeric_limits<T>::quiet_NaN()};
+  const admissibility_result<T> a = admissibility_imp(sys.d, pose, sys.strain_limit);
+  r.min_z = a.min_z;
+  r.min_z_at = a.where;
+  r.max_axial_strain = a.max_axial_strain;
+  if (!a.admissible) r.status = critical_status::inadmissible;
+}
+
 template <class System, class T>
 inline critical_state<T> state_from(const System& sys, const typename System::vec& z, T Ft, T mu,
                                     const typename System::plan_type& plan, critical_status status,
@@ -108,6 +150,7 @@ inline critical_state<T> state_from(const System& sys, const typename System::ve
     r.theta_rate_joint = sys.rate_joint(z);
     r.theta_rate_base = sys.rate_base(z);
     sys.turning_points(plan, z, mu, r.turning_points_beam, r.turning_points_spatula);
+    apply_admissibility(sys, r);
   }
   return r;
 }
@@ -115,7 +158,7 @@ inline critical_state<T> state_from(const System& sys, const typename System::ve
 template <class Policy, bool E1, bool E2, class T>
 inline critical_state<T> solve_critical_imp(const seta_params<T>& d, T Ft, const critical_guess<T>& g,
                                             const solve_options<T>& opt) {
-  const seta_system<T, Policy, E1, E2> sys(d);
+  const seta_system<T, Policy, E1, E2> sys(d, opt.strain_limit);
   if (!(Ft >= -sys.ftmax)) {  // |Ft| > (Ft)max: Griffith's condition cannot hold at the edge
     critical_state<T> r;
     r.Ft = Ft;

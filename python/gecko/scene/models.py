@@ -2,7 +2,7 @@
 
 A model declares its parameters (:class:`Param`: default, kind, allowed range) and its outputs
 (name -> parser of the output's table). Nothing here computes: the planner decides which kernels
-run, the runner runs them. Defaults are the papers' reference values (models.md §1 reference
+run, the runner runs them. Defaults are the papers' reference values (docs/theory/two_level_seta.md reference
 scene; §2 Figs 4, 6, 8).
 """
 from __future__ import annotations
@@ -71,21 +71,32 @@ class Model:
 
 PI6 = math.pi / 6
 
-SETA_PARAMS = (
-    Param("EI1", 5.0, "bending stiffness of the beam (level 1)", check=_positive, symbol="EI₁"),
-    Param("EI2", 2.0, "bending stiffness of the spatula (level 2)", check=_positive, symbol="EI₂"),
-    Param("EA1", math.inf, "axial stiffness of the beam (inf: inextensible)", check=_positive_or_inf,
-          symbol="EA₁"),
-    Param("EA2", 50.0, "axial stiffness of the spatula (inf: inextensible)", check=_positive_or_inf,
-          symbol="EA₂"),
-    Param("l1", 1.0, "length of the beam", check=_positive, symbol="l₁"),
-    Param("l2", 0.1, "length of the spatula", check=_positive, symbol="l₂"),
-    Param("alpha1", PI6, "base angle of the beam from the substrate normal", check=_open_right_angle,
-          symbol="α₁"),
-    Param("alpha2", PI6, "kink of the spatula at the joint (alpha1 + alpha2 < pi/2)",
-          check=_half_open_right_angle, symbol="α₂"),
-    Param("w", 1.0, "work of adhesion per unit length", check=_positive, symbol="w"),
-)
+def _seta_check(name: str):
+    """The scene's range check of a design field, from its admissible range in C++."""
+    from ..seta import SetaDesign
+    lo, hi, lo_incl, inf_ok, _ = SetaDesign.domain[name]
+    if inf_ok:
+        return _positive_or_inf
+    if hi == math.inf:
+        return _nonnegative if lo_incl else _positive
+    return _half_open_right_angle if lo_incl else _open_right_angle
+
+
+def _unicode_symbol(name: str) -> str:
+    """How a legend writes a design field: EI1 -> EI₁, alpha2 -> α₂."""
+    sub = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+    return name.replace("alpha", "α").translate(sub)
+
+
+def _seta_params() -> Tuple[Param, ...]:
+    from ..designs import DEFAULTS, FIELDS
+    from ..seta import SetaDesign
+    return tuple(Param(f, DEFAULTS[f], SetaDesign.descriptions[f], check=_seta_check(f),
+                       symbol=_unicode_symbol(f)) for f in FIELDS)
+
+
+#: the two-level seta's parameters: the bound C++ design type's fields, defaults, ranges and texts
+SETA_PARAMS = _seta_params()
 
 #: characteristic quantities of the two-level seta; "small_*" are the linear theory (eqs 7, 18-22)
 SETA_EXACT = ("fn0", "slope_k", "abs_slope_k", "inv_abs_k", "max_pull_off", "ft_at_max_pull_off", "min_fn",
@@ -98,7 +109,7 @@ CHARACTERISTIC_LABELS = {
     "small_fn0": "$(\\bar F_n)_0$, small deformation (eq 19)",
     "slope_k": "slope $k = d\\bar F_n/d\\bar F_t$",
     "small_slope_k": "slope $k$, small deformation (eq 18)",
-    # k = dFn/dFt (models.md). The paper's plots have Fn horizontal and call the slope there
+    # k = dFn/dFt (docs/theory/two_level_seta.md). The paper's plots have Fn horizontal and call the slope there
     # k_paper = dFt/dFn, so the paper's "1/|k|" (Fig 5b) is |dFn/dFt| = abs_slope_k.
     "abs_slope_k": "$|d\\bar F_n/d\\bar F_t|$ (the paper's $1/|k|$)",
     "small_abs_slope_k": "$|d\\bar F_n/d\\bar F_t|$, small deformation (eq 21)",
@@ -131,7 +142,7 @@ def _add(m: Model) -> None:
 _add(Model(
     "two_level_seta", "two-level seta", SETA_PARAMS,
     ("critical_line", "characteristics", "shapes", "sensitivities", "linear_line", "contact_contours", "csv"),
-    "Two-level seta of directional adhesion (models.md §1); defaults: the paper's reference scene.",
+    "Two-level seta of directional adhesion (docs/theory/two_level_seta.md); defaults: the paper's reference scene.",
     characteristics=SETA_EXACT + SETA_SMALL))
 _add(Model(
     "single_fiber", "single-level fiber",
@@ -141,7 +152,7 @@ _add(Model(
      Param("alpha", math.pi / 3, "base angle from the substrate normal", check=_open_right_angle, symbol="α"),
      Param("w", 1.0, "work of adhesion", check=_positive, symbol="w")),
     ("critical_line", "characteristics", "csv"),
-    "Single-level fiber of He et al. 2013 (models.md §1, Fig 4).", characteristics=("fn0",)))
+    "Single-level fiber of He et al. 2013 (docs/theory/two_level_seta.md, Fig 4).", characteristics=("fn0",)))
 _add(Model(
     "kendall", "Kendall model",
     (Param("EA", 50.0, "axial stiffness of the film (inf: Rivlin)", check=_positive_or_inf, symbol="EA/w"),

@@ -10,7 +10,10 @@ from .models import CHARACTERISTIC_LABELS
 
 
 def _figure(size):
-    from matplotlib.figure import Figure  # no pyplot: no GUI backend, no global state
+    from .._optional import require
+    # no pyplot: no GUI backend, no global state
+    Figure = require("matplotlib.figure", "drawing a scene's plots (or run it without figures)",
+                     "plot").Figure
     return Figure(figsize=size, layout="constrained") if _has_layout() else Figure(figsize=size)
 
 
@@ -142,7 +145,8 @@ def render_sweep(scene, table, folder: Path, formats: Sequence[str]) -> List[str
     coloured by a third column when asked."""
     spec = scene.sweep
     p = spec.plot
-    ok = table[table["status"] == 0]
+    from ..seta import CriticalStatus
+    ok = table[table["status"] == CriticalStatus.converged]
     fig = _figure((6.4, 4.8))
     ax = fig.add_subplot(1, 1, 1)
     kw = dict(s=6, linewidths=0)

@@ -27,9 +27,12 @@ struct seta_system {
 
   seta_params<T> d;
   T ftmax;  // (Ft)max = sqrt(2 EA2 w); infinity for an inextensible spatula
+  // Largest admissible axial strain of a reported state (gecko/seta/admissibility.hpp).
+  T strain_limit = std::numeric_limits<T>::infinity();
 
-  explicit seta_system(const seta_params<T>& params)
-      : d(params), ftmax(E2 ? std::sqrt(2 * params.w / params.c2) : std::numeric_limits<T>::infinity()) {}
+  explicit seta_system(const seta_params<T>& params, T strain_limit_ = std::numeric_limits<T>::infinity())
+      : d(params), ftmax(E2 ? std::sqrt(2 * params.w / params.c2) : std::numeric_limits<T>::infinity()),
+        strain_limit(strain_limit_) {}
 
   // The continuation parameter mu: tau with Ft = (Ft)max sin(tau/(Ft)max) for an extensible
   // spatula (smooth through the end of the line at Ft = (Ft)max, see make_seta_geometry), else Ft.
@@ -129,7 +132,7 @@ struct seta_system {
     return m;
   }
 
-  // Linear (small-deformation) state at Ft = 0, models.md §1 eq 18 with its shape: the start of
+  // Linear (small-deformation) state at Ft = 0, docs/theory/two_level_seta.md eq 18 with its shape: the start of
   // the homotopy to the natural state.
   vec small_deformation_state() const {
     using std::sin; using std::sqrt;

@@ -1,0 +1,219 @@
+// Tests of gecko/seta/admissibility.hpp: the lowest point of the deformed seta and its largest
+// axial strain, against an independent dense evaluation (RK4 integration of the governing ODE,
+// paper 001 eqs (1)-(2), in long double from the base, z tracked at every step), and the status 7
+// ("inadmissible") in every solver.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "gecko/seta/admissibility.hpp"
+#include "gecko/seta/batch.hpp"
+#include "gecko/seta/characteristics.hpp"
+#include "gecko/seta/critical_line.hpp"
+#include "random_designs.hpp"
+
+namespace {
+
+struct dense_result {
+  long double min_z, where, max_strain, edge_theta;
+};
+
+// theta, theta', x, z along s from the base; z relative to the contact edge at the end.
+dense_result dense_reference(const gecko::TwoLevelSeta<double>& s, const gecko::critical_state<double>& st,
+                             int steps_per_unit = 20000) {
+  const long double Fn = st.Fn, Ft = st.Ft;
+  const long double c1 = std::isinf(s.EA1) ? 0.0L : 1.0L / s.EA1;
+  const long double c2 = std::isinf(s.EA2) ? 0.0L : 1.0L / s.EA2;
+  struct Y { long double th, om, z; };
+  auto f = [&](const Y& y, long double EI, long double c) {
+    const long double T = Ft * std::sin(y.th) - Fn * std::cos(y.th);
+    return Y{y.om, -(Fn * std::sin(y.th) + Ft * std::cos(y.th)) * (1 + c * T) / EI, -(1 + c * T) * std::cos(y.th)};
+  };
+  std::vector<long double> zs, ss, es;
+  auto strain = [&](const Y& y, long double c) {
+    const long double T = Ft * std::sin(y.th) - Fn * std::cos(y.th);
+    return std::fabs(c * T);
+  };
+  Y y{s.alpha1, st.theta_rate_base, 0};
+  zs.push_back(0);
+  ss.push_back(0);
+  es.push_back(strain(y, c1));
+  auto run = [&](long double len, long double EI, long double c, long double s0) {
+    const int n = std::max(400, static_cast<int>(steps_per_unit * len));
+    const long double h = len / n;
+    if (!es.empty()) es.back() = std::max(es.back(), strain(y, c));
+    for (int i = 0; i < n; ++i) {
+      const Y k1 = f(y, EI, c);
+      const Y k2 = f({y.th + h / 2 * k1.th, y.om + h / 2 * k1.om, y.z + h / 2 * k1.z}, EI, c);
+      const Y k3 = f({y.th + h / 2 * k2.th, y.om + h / 2 * k2.om, y.z + h / 2 * k2.z}, EI, c);
+      const Y k4 = f({y.th + h * k3.th, y.om + h * k3.om, y.z + h * k3.z}, EI, c);
+      y.th += h / 6 * (k1.th + 2 * k2.th + 2 * k3.th + k4.th);
+      y.om += h / 6 * (k1.om + 2 * k2.om + 2 * k3.om + k4.om);
+      y.z += h / 6 * (k1.z + 2 * k2.z + 2 * k3.z + k4.z);
+      zs.push_back(y.z);
+      ss.push_back(s0 + h * (i + 1));
+      es.push_back(strain(y, c));
+    }
+  };
+  run(s.l1, s.EI1, c1, 0);
+  const std::size_t joint = zs.size() - 1;
+  y.th += s.alpha2;
+  y.om *= s.EI1 / s.EI2;
+  run(s.l2, s.EI2, c2, s.l1);
+  // Extrema of the samples, refined by the parabola through the neighbours (an interior extremum
+  // of a smooth function; the sampled value alone is off by O(h^2)).
+  auto refine = [&](const std::vector<long double>& v, std::size_t i, long double sign) {
+    if (i == 0 || i + 1 >= v.size() || i == joint) return v[i];  // an end or the kink
+    const long double a = v[i - 1], b = v[i], c = v[i + 1];
+    const long double den = a - 2 * b + c;
+    if (!(sign * den < 0)) return b;
+    return b - (c - a) * (c - a) / (8 * den);
+  };
+  dense_result r{0, 0, 0, y.th};
+  std::size_t imax = 0;
+  for (std::size_t i = 0; i < es.size(); ++i)
+    if (es[i] > es[imax]) imax = i;
+  r.max_strain = refine(es, imax, 1);
+  const long double z_edge = zs.back();
+  r.min_z = 0;
+  r.where = s.l1 + s.l2;
+  std::size_t imin = zs.size() - 1;
+  for (std::size_t i = 0; i < zs.size(); ++i)
+    if (zs[i] - z_edge < r.min_z) {
+      r.min_z = zs[i] - z_edge;
+      r.where = ss[i];
+      imin = i;
+    }
+  if (r.min_z < 0) r.min_z = refine(zs, imin, -1) - z_edge;
+  return r;
+}
+
+gecko::TwoLevelSeta<double> reference_with_alpha2(double alpha2) {
+  gecko::TwoLevelSeta<double> s;
+  s.alpha2 = alpha2;
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("the paper's reference design with alpha2 = 1.0 crosses the substrate near (Ft)max",
+          "[seta][admissibility]") {
+  const auto s = reference_with_alpha2(1.0);
+  const auto st = gecko::critical_line_at(s, std::vector<double>{0.0, 5.0, 9.999});
+  REQUIRE(st[0].status == gecko::critical_status::converged);
+  CHECK(st[0].min_z == 0.0);
+  CHECK(st[0].max_axial_strain >= 0.0);
+  REQUIRE(st[2].status == gecko::critical_status::inadmissible);
+  // Kept for drawing: the solved values are there.
+  CHECK(std::isfinite(st[2].Fn));
+  CHECK(std::isfinite(st[2].theta_joint));
+  const auto ref = dense_reference(s, st[2]);
+  INFO("min_z " << st[2].min_z << " reference " << static_cast<double>(ref.min_z) << " at "
+                << st[2].min_z_at << " / " << static_cast<double>(ref.where));
+  CHECK(st[2].min_z < -5e-4);
+  CHECK(st[2].min_z > -5e-3);
+  CHECK(std::fabs(st[2].min_z - static_cast<double>(ref.min_z)) < 1e-9);
+  CHECK(std::fabs(st[2].min_z_at - static_cast<double>(ref.where)) < 1e-3);
+  CHECK(std::fabs(st[2].max_axial_strain - static_cast<double>(ref.max_strain)) < 1e-9);
+  // The same verdict from the one-state solver and the public check.
+  gecko::critical_guess<double> g{st[2].Fn, st[2].theta_joint, st[2].theta_rate_joint, st[2].theta_rate_base};
+  const auto one = gecko::solve_critical(s, 9.999, g);
+  CHECK(one.status == gecko::critical_status::inadmissible);
+  CHECK(std::fabs(one.min_z - st[2].min_z) < 1e-12);
+  const auto chk = gecko::admissibility_check(s, st[2]);
+  CHECK_FALSE(chk.admissible);
+  CHECK(chk.crosses_substrate);
+}
+
+TEST_CASE("reference design: admissible up to near (Ft)max; strain reaches 20 % there", "[seta][admissibility]") {
+  gecko::TwoLevelSeta<double> s;
+  const double fm = gecko::ft_max(s);
+  const auto st = gecko::critical_line_at(s, std::vector<double>{0.0, 2.0, 7.0, 9.9, fm});
+  for (const auto& x : st) {
+    const auto ref = dense_reference(s, x, 4000);
+    CHECK(std::fabs(x.max_axial_strain - static_cast<double>(ref.max_strain)) < 1e-9);
+    CHECK(std::fabs(x.min_z - static_cast<double>(ref.min_z)) < 1e-9);
+    if (x.Ft == fm) continue;
+    REQUIRE(x.status == gecko::critical_status::converged);
+    CHECK(x.min_z == 0.0);
+  }
+  // At (Ft)max the contact edge is a turning point (theta2'(a) = 0) and theta2 > pi/2 just before
+  // it (EI2 theta2'' = -Fn (1 + Ft/EA2) > 0 there for Fn < 0): the spatula approaches the edge
+  // from below, with the joint lowest, ~4.4e-5 l1 under the substrate.
+  CHECK(st.back().status == gecko::critical_status::inadmissible);
+  CHECK(st.back().min_z < -4e-5);
+  CHECK(st.back().min_z_at == Approx(s.l1).epsilon(1e-12));
+  CHECK(st.back().max_axial_strain == Approx(0.2).epsilon(1e-12));
+  // A strain limit turns the states above it into status 7, values kept.
+  gecko::critical_line_options<double> opt;
+  opt.strain_limit = 0.15;
+  const auto lim = gecko::critical_line_at(s, std::vector<double>{2.0, 9.9}, opt);
+  CHECK(lim[0].status == gecko::critical_status::converged);
+  CHECK(lim[1].status == gecko::critical_status::inadmissible);
+  CHECK(lim[1].Fn == Approx(st[3].Fn).epsilon(1e-12));
+}
+
+TEST_CASE("random critical states: min z against a dense ODE evaluation", "[seta][admissibility][random]") {
+  std::uint64_t seed = 0x5eed0013ULL;
+  int crossing = 0, checked = 0, slow_path = 0;
+  for (int i = 0; i < 60; ++i) {
+    auto s = seta_test::sweep_box_design(seed);
+    std::vector<double> ft;
+    const double fm = gecko::ft_max(s);
+    for (int k = 0; k < 5; ++k) ft.push_back(fm * (0.2 * k + 0.19));
+    const auto st = gecko::critical_line_at(s, ft);
+    for (const auto& x : st) {
+      if (x.status != gecko::critical_status::converged && x.status != gecko::critical_status::inadmissible) continue;
+      REQUIRE(x.min_z == x.min_z);  // the check was made
+      const auto ref = dense_reference(s, x, 4000);
+      INFO("design " << i << " Ft " << x.Ft << " min_z " << x.min_z << " ref " << static_cast<double>(ref.min_z)
+                     << " edge " << static_cast<double>(ref.edge_theta));
+      CHECK(std::fabs(x.min_z - static_cast<double>(ref.min_z)) < 1e-9);
+      CHECK(std::fabs(x.max_axial_strain - static_cast<double>(ref.max_strain)) < 1e-9);
+      CHECK((x.status == gecko::critical_status::inadmissible) == (ref.min_z < -1e-9));
+      const auto chk = gecko::admissibility_check(s, x);
+      if (!chk.exact_fast_path) ++slow_path;
+      crossing += x.status == gecko::critical_status::inadmissible;
+      ++checked;
+    }
+  }
+  INFO("checked " << checked << " crossing " << crossing << " slow path " << slow_path);
+  CHECK(checked > 200);
+  CHECK(crossing > 0);
+}
+
+TEST_CASE("injected states: a joint pushed below the substrate is caught", "[seta][admissibility]") {
+  gecko::TwoLevelSeta<double> s;
+  const auto st = gecko::critical_line_at(s, std::vector<double>{5.0})[0];
+  REQUIRE(st.status == gecko::critical_status::converged);
+  // Not a solution any more, but a pose: the spatula made to leave the joint past pi/2 with the
+  // rates of a state that curls back to the edge; the quadrature must find the dip.
+  gecko::seta_pose<double> p{st.Fn, st.Ft, st.theta_joint, st.theta_rate_base, st.theta_rate_joint,
+                             st.turning_points_beam, st.turning_points_spatula,
+                             std::numeric_limits<double>::quiet_NaN()};
+  const auto ok = gecko::admissibility_check(s, p);
+  CHECK(ok.admissible);
+  CHECK(ok.exact_fast_path);
+  const auto lim = gecko::admissibility_check(s, p, 1e-6);
+  CHECK_FALSE(lim.admissible);
+  CHECK(lim.strain_exceeded);
+  CHECK_FALSE(lim.crosses_substrate);
+}
+
+TEST_CASE("traced line, batch and characteristics see status 7", "[seta][admissibility]") {
+  const auto s = reference_with_alpha2(1.0);
+  const auto line = gecko::critical_line(s);
+  int bad = 0;
+  for (const auto& p : line.points) bad += p.status == gecko::critical_status::inadmissible;
+  CHECK(bad > 0);
+  CHECK(line.points.front().status == gecko::critical_status::converged);
+  std::vector<gecko::TwoLevelSeta<double>> designs{s, gecko::TwoLevelSeta<double>()};
+  std::vector<double> ft{5.0, 9.999};
+  std::vector<gecko::critical_state<double>> out(4);
+  gecko::critical_line_batch(designs.data(), 2, ft.data(), 2, out.data(), 2);
+  CHECK(out[1].status == gecko::critical_status::inadmissible);
+  CHECK(out[3].status == gecko::critical_status::converged);
+}
