@@ -601,9 +601,11 @@ def contact_contours(ax, Fn, Ft, a, *, status=None, levels=9, l2_over_l1: Option
     ``a`` 2-D arrays of one shape (rows: Ft; ``TwoLevelSeta.contact_state`` on a mesh), NaN where
     there is no single equilibrium on the spatula. ``levels``: a number of levels between l1 and
     l1 + l2, or the a/l1 values. ``filled``: shade between the levels (one design), else lines
-    only in ``color`` (several designs). With ``status``, loads with several equilibria are
-    hatched. ``colorbar``: a figure to draw the colour bar on. Returns the contour set."""
+    only in ``color`` (several designs). With ``status``, only status-0 loads are contoured and
+    loads with several equilibria are hatched. ``colorbar``: a figure to draw the colour bar on. Returns the contour set."""
     a = np.asarray(a, dtype=np.float64)
+    if status is not None:  # only loads with one admissible equilibrium (inadmissible ones keep a)
+        a = np.where(np.asarray(status) == 0, a, np.nan)
     finite = a[np.isfinite(a)]
     if isinstance(levels, (int, np.integer)):
         if l2_over_l1 is not None:

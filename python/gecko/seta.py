@@ -228,7 +228,8 @@ class ContactStatus(enum.IntEnum):
     INVALID_INPUT = 5       #: bad input under ``errors="nan"``
     SEVERAL_EQUILIBRIA = 6  #: more than one equilibrium (count in ``equilibria``; all of them with
                             #: ``all_equilibria=True``)
-    INADMISSIBLE = 7        #: reserved: the equilibrium crosses the substrate
+    INADMISSIBLE = 7        #: equilibria exist but none is admissible: the seta crosses the substrate
+                            #: before the edge, or exceeds ``strain_limit`` (values kept for drawing)
 
 
 @dataclass
@@ -240,8 +241,10 @@ class ContactState:
     l1 + l2 - a; ``theta_joint`` = theta2(l1); ``theta_rate_joint`` = theta2'(l1), ``theta_rate_base``
     = theta1'(0); ``turning_points`` (beam + spatula, also separately); ``max_axial_strain`` = max
     |T|/EA over the free length; ``energy_release_rate``: the left side of eq (3) at the edge (= w at
-    every equilibrium, a check); ``equilibria``: how many equilibria the load has on the spatula;
-    ``status``: ``ContactStatus`` values.
+    every equilibrium, a check); ``min_z``: the lowest height of the seta above the substrate before
+    the edge (< 0: inadmissible); ``equilibria``: how many equilibria the load has on the spatula
+    (admissible or not); ``status``: ``ContactStatus`` values. Inadmissible states (status 7) keep
+    their values, for drawing.
 
     With ``all_equilibria=True`` every per-state field has one more trailing axis, one entry per
     equilibrium (padded with NaN / -1), and ``state_status`` gives each entry's status (-1: padding);
@@ -259,6 +262,7 @@ class ContactState:
     turning_points_spatula: np.ndarray
     max_axial_strain: np.ndarray
     energy_release_rate: np.ndarray
+    min_z: np.ndarray
     equilibria: np.ndarray
     status: np.ndarray
     state_status: Optional[np.ndarray] = None
@@ -270,7 +274,7 @@ class ContactState:
 
 
 _CONTACT_FLOAT = ("a", "contact_length", "theta_joint", "theta_rate_joint", "theta_rate_base",
-                  "max_axial_strain", "energy_release_rate")
+                  "max_axial_strain", "energy_release_rate", "min_z")
 _CONTACT_INT = ("turning_points", "turning_points_beam", "turning_points_spatula")
 
 
@@ -405,7 +409,8 @@ class TwoLevelSeta:
                             turning_points_spatula=shaped(d["turning_points_spatula"]))
 
     def contact_state(self, Fn, Ft, *, all_equilibria: bool = False, errors: str = "raise",
-                      scan_points: Optional[int] = None, threads: int = 0) -> ContactState:
+                      scan_points: Optional[int] = None, threads: int = 0,
+                      strain_limit: Optional[float] = None) -> ContactState:
         """The forward problem (paper 001 after eq 15): the contact state at the load (Fn, Ft).
 
         ``Fn`` and ``Ft`` broadcast like numpy arrays. For each load the joint angle theta2(l1) is
@@ -415,7 +420,9 @@ class TwoLevelSeta:
         the critical line (no side contact), loads that would push the edge onto the beam, and loads
         with several equilibria get their own ``ContactStatus``. ``all_equilibria=True`` returns every
         equilibrium (see ``ContactState``). ``scan_points``: scan nodes per monotone piece of the
-        orbit (default 8). ``threads``: 0 automatic.
+        orbit (default 6). ``threads``: 0 automatic. An equilibrium whose seta crosses the substrate
+        before the edge, or whose largest axial strain exceeds ``strain_limit`` (default: no
+        limit), is inadmissible (status 7, values kept).
 
         Bad input (NaN or infinite loads, Ft > (Ft)max = sqrt(2 EA2 w), shapes that do not
         broadcast) raises ``ValueError`` naming the argument and its index; with ``errors="nan"`` such
@@ -434,10 +441,13 @@ class TwoLevelSeta:
         sp = 0 if scan_points is None else int(scan_points)
         if scan_points is not None and not 3 <= sp <= 64:
             raise ValueError(f"scan_points = {scan_points!r} is not allowed: need 3 <= scan_points <= 64")
+        if strain_limit is not None and not float(strain_limit) >= 0:
+            raise ValueError(f"strain_limit = {strain_limit!r} is not allowed: need strain_limit >= 0")
         if int(threads) < 0:
             raise ValueError(f"threads = {threads!r} is not allowed: need threads >= 0 (0: automatic)")
         try:
-            d = _core.seta_contact_state(self._params(), fn, ft, code, bool(all_equilibria), sp, int(threads))
+            d = _core.seta_contact_state(self._params(), fn, ft, code, bool(all_equilibria), sp, int(threads),
+                                         math.nan if strain_limit is None else float(strain_limit))
         except ValueError as e:
             raise _with_index(e, shape) from None
         if not all_equilibria:

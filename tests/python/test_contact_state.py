@@ -172,3 +172,22 @@ def test_contact_contours_scene_checks_its_grids():
     bad2 = {"study": [{"name": "s", "model": "two_level_seta", "outputs": {"contact_contours": {"levels": 0}}}]}
     with pytest.raises(SceneError, match="levels"):
         load_scene(bad2)
+
+
+def test_inadmissible_states_keep_their_values():
+    ref = gecko.TwoLevelSeta()
+    fn = float(ref.critical_line(Ft=[9.0]).Fn[0]) + 1e-4
+    ok = ref.contact_state(fn, 9.0)
+    assert int(ok.status) == ContactStatus.CONVERGED and float(ok.max_axial_strain) > 0.17
+    lim = ref.contact_state(fn, 9.0, strain_limit=0.1)
+    assert int(lim.status) == ContactStatus.INADMISSIBLE
+    assert float(lim.a) == float(ok.a) and float(lim.theta_joint) == float(ok.theta_joint)
+    with pytest.raises(ValueError, match="strain_limit"):
+        ref.contact_state(fn, 9.0, strain_limit=-1.0)
+    soft = gecko.TwoLevelSeta(EI1=1.5, EI2=0.3, l2=0.5, alpha1=0.3, alpha2=0.6, EA1=80.0)
+    st = soft.contact_state(np.linspace(-5, 3, 41)[None, :], np.linspace(-5, 10, 41)[:, None])
+    bad = st.status == ContactStatus.INADMISSIBLE
+    assert bad.any()
+    assert np.isfinite(st.a[bad]).all() and (st.min_z[bad] < 0).all()
+    good = st.status == ContactStatus.CONVERGED
+    assert (st.min_z[good] >= -1e-12 * 1.5).all()

@@ -15,9 +15,14 @@
 // The orbit part 0 <= t <= l2 is mapped to beta (monotone pieces between the spatula's turning
 // points, theta2' changing sign at their ends); G is scanned on each piece for both signs of the
 // base rate theta1'(0) (the beam's two branches, joined where theta1'(0) = 0), every sign change
-// is refined by a bracketing solver to full precision, and a local minimum of |G| between scan
-// nodes is searched for a hidden pair of roots. Both lengths are the closed-form Carlson forms of
-// gecko/seta/elastica_segment.hpp (turning points included); nothing is integrated.
+// is refined by a bracketing solver (Brent) to full precision, and a local minimum of |G| between
+// scan nodes is searched for a hidden pair of roots. Extra nodes go where G is not smooth between
+// scan nodes: the joins of the two branches (found with a Lipschitz bound on R1(alpha1), no R_F),
+// the beam's zero-length jump at theta1(l1) = alpha1, and the edge of a stretch without beam
+// states. Both lengths are the closed-form Carlson forms of gecko/seta/elastica_segment.hpp
+// (turning points included); nothing is integrated. Each equilibrium is then checked for
+// admissibility (gecko/seta/admissibility.hpp: the seta above the substrate before the edge, an
+// optional strain limit).
 //
 // Where no equilibrium has 0 < t <= l2, G has one sign at both ends and says where the equilibrium
 // went: beyond t = l2 (the seta would need a longer spatula: a load below the critical line, where
@@ -37,13 +42,14 @@
 
 #include "gecko/core/error.hpp"
 #include "gecko/core/policy.hpp"
+#include "gecko/seta/admissibility.hpp"
 #include "gecko/seta/critical_residual.hpp"
 #include "gecko/seta/two_level_seta.hpp"
 
 namespace gecko {
 
-// What the forward solve found. 0 only when exactly one equilibrium has its contact edge on the
-// spatula (l1 < a <= l1 + l2); the numbers shared with critical_status mean the same.
+// What the forward solve found. 0 only when exactly one admissible equilibrium has its contact
+// edge on the spatula (l1 < a <= l1 + l2); the numbers shared with critical_status mean the same.
 enum class contact_status : int {
   converged = 0,
   not_converged = 1,       // a bracketed root could not be refined, or the scan could not decide
@@ -52,9 +58,11 @@ enum class contact_status : int {
                            // EA), or l2 exceeds one period of the spatula's orbit
   beyond_joint = 4,        // the contact edge would pass the joint onto the beam (outside the model)
   invalid_input = 5,       // bad input under nan_policy
-  several_equilibria = 6,  // more than one equilibrium with l1 < a <= l1 + l2 (see `equilibria`;
-                           // contact_equilibria returns all of them)
-  inadmissible = 7         // reserved: the equilibrium crosses the substrate
+  several_equilibria = 6,  // more than one admissible equilibrium with l1 < a <= l1 + l2 (see
+                           // `equilibria`; contact_equilibria returns all of them)
+  inadmissible = 7         // equilibria exist, but none is admissible: the seta crosses the substrate
+                           // before the edge (joint or beam below z = 0) or exceeds the strain limit;
+                           // the (first) state's values are kept for drawing
 };
 
 template <class T>
@@ -73,7 +81,10 @@ struct contact_result {
   // Left side of eq (3) at the edge, 1/2 EI2 theta2'(a)^2 + T(pi/2)^2/(2 EA2), from the solved
   // spatula state: equal to w at every equilibrium (it is the condition that fixes a).
   T energy_release_rate = std::numeric_limits<T>::quiet_NaN();
-  int equilibria = 0;  // equilibria found with l1 < a <= l1 + l2
+  // Lowest height of the seta above the substrate over 0 <= s <= a (0 at the edge; < 0:
+  // inadmissible), from gecko/seta/admissibility.hpp.
+  T min_z = std::numeric_limits<T>::quiet_NaN();
+  int equilibria = 0;  // equilibria found with l1 < a <= l1 + l2 (admissible or not)
   contact_status status = contact_status::not_converged;
 };
 
@@ -85,6 +96,8 @@ struct contact_options {
   // A root within this (relative to l1 + l2) of t = l2 is the critical state itself and counts
   // as an equilibrium with a = l1 + l2 (the critical line is the boundary of contact).
   T edge_tolerance = T(1e-12);
+  // Equilibria whose largest axial strain |T|/EA exceeds this are inadmissible (status 7).
+  T strain_limit = std::numeric_limits<T>::infinity();
 };
 
 namespace detail {
@@ -496,6 +509,7 @@ inline contact_status contact_solve(const seta_params<T>& d, T Fn, T Ft, const c
     r.theta_rate_base = k1;
     r.turning_points = r.turning_points_beam = r.turning_points_spatula = 0;
     r.max_axial_strain = 0;
+    r.min_z = 0;  // theta rises monotonically from alpha1 to pi/2: z falls to the edge
     r.energy_release_rate = d.w;
     r.equilibria = 1;
     r.status = contact_status::converged;
@@ -813,12 +827,30 @@ inline contact_status contact_solve(const seta_params<T>& d, T Fn, T Ft, const c
     r.max_axial_strain = strain;
     // Eq (3), left side: 1/2 EI2 theta2'(a)^2 = R2(pi/2) (eq 12), T(pi/2) = N cos(phi) = Ft.
     r.energy_release_rate = fp.R2(half_pi) + d.c2 * Ft * Ft / 2;
-    r.status = contact_status::converged;
+    // Admissibility (gecko/seta/admissibility.hpp): the seta must stay on its side of the
+    // substrate before the edge (and within the caller's strain limit); else status 7, with the
+    // state's values kept for drawing.
+    seta_pose<T> pose{Fn, Ft, r.theta_joint, r.theta_rate_base, r.theta_rate_joint, r.turning_points_beam,
+                      r.turning_points_spatula, r.a - d.l1};
+    const auto adm = admissibility_imp(d, pose, opt.strain_limit);
+    r.min_z = adm.min_z;
+    if (adm.max_axial_strain == adm.max_axial_strain) r.max_axial_strain = adm.max_axial_strain;
+    r.status = adm.admissible ? contact_status::converged : contact_status::inadmissible;
     eq[n_eq++] = r;
   }
-  for (int i = 0; i < n_eq; ++i) eq[i].equilibria = n_eq;
-  if (n_eq == 1) return contact_status::converged;
-  if (n_eq > 1) return contact_status::several_equilibria;
+  int n_adm = 0, first_adm = -1;
+  for (int i = 0; i < n_eq; ++i) {
+    eq[i].equilibria = n_eq;
+    if (eq[i].status == contact_status::converged && n_adm++ == 0) first_adm = i;
+  }
+  if (n_adm == 1) {  // the one admissible equilibrium first
+    const contact_result<T> keep = eq[first_adm];
+    for (int i = first_adm; i > 0; --i) eq[i] = eq[i - 1];
+    eq[0] = keep;
+    return contact_status::converged;
+  }
+  if (n_adm > 1) return contact_status::several_equilibria;
+  if (n_eq > 0) return contact_status::inadmissible;
   if (unsupported) return contact_status::unsupported_state;
   if (refine_failed) return contact_status::not_converged;
   // No equilibrium on the spatula: why (header comment). G at the ends (t = 0: the edge at the
@@ -881,7 +913,10 @@ class contact_solver {
     contact_result<T> eq[detail::max_contact_equilibria];
     int n = 0;
     const contact_status st = solve(Fn, Ft, eq, n);
-    if (st == contact_status::converged) return eq[0];
+    if (st == contact_status::converged || st == contact_status::inadmissible) {
+      eq[0].status = st;
+      return eq[0];
+    }
     contact_result<T> r;
     r.Fn = Fn;
     r.Ft = Ft;
