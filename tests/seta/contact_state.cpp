@@ -73,7 +73,9 @@ TEST_CASE("contact_state matches ODE shooting to 1e-11 in a", "[seta][contact]")
   for (const auto& r : rows) {
     const auto st = gecko::contact_state(r.seta, r.Fn, r.Ft);
     INFO(r.label << " Fn " << r.Fn << " Ft " << r.Ft << " EI1 " << r.seta.EI1 << " EA2 " << r.seta.EA2);
-    REQUIRE(st.status == gecko::contact_status::converged);
+    // Near (Ft)max the reference design dips below the substrate: inadmissible, values kept.
+    REQUIRE((st.status == gecko::contact_status::converged || st.status == gecko::contact_status::inadmissible));
+    CHECK((st.status == gecko::contact_status::inadmissible) == (st.min_z < -1e-12 * (r.seta.l1 + r.seta.l2)));
     CHECK(st.equilibria == 1);
     CHECK(std::fabs(st.a - r.a) <= 1e-11);
     CHECK(std::fabs(st.theta_joint - r.theta_joint) <= 1e-10);
