@@ -234,21 +234,50 @@ class ContactStatus(enum.IntEnum):
 
 @dataclass
 class ContactState:
-    """The forward problem's result (``TwoLevelSeta.contact_state``), arrays in the broadcast shape
-    of (Fn, Ft); NaN (or -1 for counts) where ``status != 0``.
-
-    ``a``: non-contact length in the convected coordinate, l1 < a <= l1 + l2; ``contact_length`` =
-    l1 + l2 - a; ``theta_joint`` = theta2(l1); ``theta_rate_joint`` = theta2'(l1), ``theta_rate_base``
-    = theta1'(0); ``turning_points`` (beam + spatula, also separately); ``max_axial_strain`` = max
-    |T|/EA over the free length; ``energy_release_rate``: the left side of eq (3) at the edge (= w at
-    every equilibrium, a check); ``min_z``: the lowest height of the seta above the substrate before
-    the edge (< 0: inadmissible); ``equilibria``: how many equilibria the load has on the spatula
-    (admissible or not); ``status``: ``ContactStatus`` values. Inadmissible states (status 7) keep
-    their values, for drawing.
+    """The forward problem's result (``TwoLevelSeta.contact_state``): arrays in the broadcast
+    shape of (Fn, Ft), NaN (or -1 for counts) where there is no single admissible equilibrium
+    (``status`` other than 0 and 7).
 
     With ``all_equilibria=True`` every per-state field has one more trailing axis, one entry per
-    equilibrium (padded with NaN / -1), and ``state_status`` gives each entry's status (-1: padding);
-    ``status`` and ``equilibria`` keep the load's shape."""
+    equilibrium (padded with NaN / -1), and ``state_status`` gives each entry's status (-1:
+    padding); ``status`` and ``equilibria`` keep the load's shape.
+
+    Attributes
+    ----------
+    Fn, Ft : numpy.ndarray
+        The loads (broadcast).
+    a : numpy.ndarray
+        Non-contact length in the convected coordinate, l1 < a <= l1 + l2.
+    contact_length : numpy.ndarray
+        l1 + l2 - a.
+    theta_joint : numpy.ndarray
+        theta2(l1), the spatula's angle at the joint, from the substrate normal.
+    theta_rate_joint, theta_rate_base : numpy.ndarray
+        theta2'(l1) and theta1'(0).
+    turning_points, turning_points_beam, turning_points_spatula : numpy.ndarray of int
+        Sign changes of theta' inside the free length (beam + spatula), and per segment.
+    max_axial_strain : numpy.ndarray
+        Largest |T|/EA over the free length.
+    energy_release_rate : numpy.ndarray
+        Left side of eq (3) at the edge; equals w at every equilibrium (a check of the state).
+    min_z : numpy.ndarray
+        Lowest height of the seta above the substrate before the edge (< 0: inadmissible).
+    equilibria : numpy.ndarray of int
+        How many equilibria the load has with its edge on the spatula (admissible or not).
+    status : numpy.ndarray of int
+        :class:`ContactStatus` values; inadmissible states (7) keep their values, for drawing.
+    state_status : numpy.ndarray of int or None
+        With ``all_equilibria=True``: the status of each equilibrium.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> st = gecko.TwoLevelSeta().contact_state([-1.0, 0.0, 3.0], 2.0)
+    >>> st.a.round(6), st.status
+    (array([1.091284, 1.006882,      nan]), array([0, 0, 4], dtype=int32))
+    >>> st.status_names()
+    array(['CONVERGED', 'CONVERGED', 'BEYOND_JOINT'], dtype=object)
+    """
 
     Fn: np.ndarray
     Ft: np.ndarray
@@ -428,6 +457,32 @@ class TwoLevelSeta:
         broadcast) raises ``ValueError`` naming the argument and its index; with ``errors="nan"`` such
         elements get status ``INVALID_INPUT`` instead. Ft < -(Ft)max is valid input: no edge can be
         in equilibrium there (status ``NO_CONTACT``).
+
+        Parameters
+        ----------
+        Fn, Ft : float or array_like
+            Normal force (< 0 pulls off) and shear force (> 0 grips), broadcast together.
+        all_equilibria : bool
+            Return every equilibrium on a trailing axis (see :class:`ContactState`).
+        errors : {"raise", "nan"}
+            Bad elements raise ``ValueError``, or get status ``INVALID_INPUT``.
+        scan_points : int, optional
+            Scan nodes per monotone piece of the spatula's orbit, 3 to 64 (default 6).
+        threads : int
+            Threads of the one pool (0: automatic).
+        strain_limit : float, optional
+            Largest admissible axial strain |T|/EA (default: no limit).
+
+        Returns
+        -------
+        ContactState
+
+        Examples
+        --------
+        >>> import gecko
+        >>> st = gecko.TwoLevelSeta().contact_state(-1.0, 2.0)
+        >>> round(float(st.a), 9), int(st.status), int(st.turning_points)
+        (1.091283999, 0, 0)
         """
         code = _error_code(errors)
         try:
