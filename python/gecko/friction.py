@@ -869,6 +869,11 @@ class SteadySlidingFit(NamedTuple):
     profile_upper: Optional[np.ndarray] = None
     sigma_known: bool = False
 
+    @property
+    def status_code(self) -> "FitStatus":
+        """``status`` as a :class:`FitStatus` member (code compares these, not the text)."""
+        return FitStatus[self.status]
+
 
 def _sigma_array(s, n, name):
     a = np.asarray(s, dtype=np.float64)
@@ -882,11 +887,6 @@ def _sigma_array(s, n, name):
         raise ValueError(f"gecko.fit_steady_sliding: {name}[{i}] = {float(a[i])!r} is out of range: need "
                          "0 < sigma < inf")
     return a
-
-    @property
-    def status_code(self) -> "FitStatus":
-        """``status`` as a :class:`FitStatus` member (code compares these, not the text)."""
-        return FitStatus[self.status]
 
 
 def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC, *,
@@ -986,8 +986,6 @@ def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC
         raise ValueError(f"profile_level = {profile_level!r} is out of range: need 0 < level < 1")
     if not (max_condition > 1):
         raise ValueError(f"max_condition = {max_condition!r} is out of range: need > 1")
-    if int(max_iterations) < 0:
-        raise ValueError(f"max_iterations = {max_iterations!r} is out of range: need >= 0")
     delta = NormalDist().inv_cdf(0.5 + profile_level / 2) ** 2
     sp = sq = None
     if sigma is not None:

@@ -136,6 +136,9 @@ void bind_enums(py::module_& m) {
       .value("converged", fit_status::converged)
       .value("max_iterations", fit_status::max_iterations)
       .value("singular", fit_status::singular)
+      .value("not_identifiable", fit_status::not_identifiable)
+      .value("no_progress", fit_status::no_progress)
+      .value("non_finite", fit_status::non_finite)
       .finalize();
 }
 

@@ -20,7 +20,7 @@ def test_packaged_figures_are_the_examples():
     in_repo = {p.name: p.read_text(encoding="utf-8") for p in EXAMPLES.glob("*.toml")}
     assert packaged == in_repo, "examples/*.toml and python/gecko/scene/figures/*.toml must be identical"
     assert len(packaged) == 16  # 9 seta-paper figures, 3 friction-paper figures, the README demo,
-    # a design sweep, a design optimisation and the contours of the contact length (eq 15)
+    # a design sweep, a design optimisation and the contact-length contours of the forward problem
 
 
 @pytest.mark.parametrize("path", sorted(EXAMPLES.rglob("*.toml")), ids=lambda p: p.stem)
