@@ -405,10 +405,15 @@ inline bool orbit_pieces(const FP& fp, orbit_piece<T> pieces[3], int& count, boo
   const T beta_min = fp.phi - pi - astar + shift * two_pi;
   const T beta_max = fp.phi + astar + shift * two_pi;
   // Piece 1: theta2'(l1) > 0, beta from pi/2 down to the lower turning point. Most loads end
-  // there (t = l2 before the turning point): try that first, without measuring the piece.
+  // there (t = l2 before the turning point): when a lower bound of the piece's length says so,
+  // invert without measuring the piece. The bound: t1 >= (pi/2 - beta_min) / max theta2', with
+  // theta2'^2 = 2 R2(u)/EI2 largest at u = -1 (R2 concave, vertex at u = -1/(c2 N) when inside).
   {
+    T R2max = g.M + fp.N - fp.d.c2 * fp.N * fp.N / 2;
+    if (fp.d.c2 * fp.N > 1) R2max = g.M + 1 / (2 * fp.d.c2);
+    const T t1_low = R2max > 0 ? (half_pi - beta_min) / std::sqrt(2 * R2max / fp.d.EI2) : T(0);
     T beta = 0;
-    if (invert_spatula(fp, 1, beta_min, half_pi, T(1), l2, guess1, beta)) {
+    if (t1_low > l2 && invert_spatula(fp, 1, beta_min, half_pi, T(1), l2, guess1, beta)) {
       pieces[count++] = {half_pi, beta, 1};
       return true;
     }
@@ -416,8 +421,10 @@ inline bool orbit_pieces(const FP& fp, orbit_piece<T> pieces[3], int& count, boo
   const T t1 = fp.L2(beta_min, 1, &unsupported);
   if (unsupported) return false;
   if (!(t1 == t1)) return false;
-  if (l2 <= t1) {  // the turning point itself (or rounding at it)
-    pieces[count++] = {half_pi, beta_min, 1};
+  if (l2 <= t1) {
+    T beta = 0;
+    if (!invert_spatula(fp, 1, beta_min, half_pi, t1 - l2, l2, guess1, beta)) beta = beta_min;
+    pieces[count++] = {half_pi, beta, 1};
     return true;
   }
   pieces[count++] = {half_pi, beta_min, 1};
