@@ -597,13 +597,52 @@ def sensitivities(ax, Ft, dFn: dict, *, w: float = 1.0, **kw):
 
 def contact_contours(ax, Fn, Ft, a, *, status=None, levels=9, l2_over_l1: Optional[float] = None,
                      filled: bool = True, color=None, label: Optional[str] = None, colorbar=None, **kw):
-    """Contours of the non-contact length a (in units of l1) over a grid of loads: ``Fn``, ``Ft``,
-    ``a`` 2-D arrays of one shape (rows: Ft; ``TwoLevelSeta.contact_state`` on a mesh), NaN where
-    there is no single equilibrium on the spatula. ``levels``: a number of levels between l1 and
-    l1 + l2, or the a/l1 values. ``filled``: shade between the levels (one design), else lines
-    only in ``color`` (several designs). With ``status``, loads with several equilibria are
-    hatched. ``colorbar``: a figure to draw the colour bar on. Returns the contour set."""
+    """Contours of the non-contact length a (in units of l1) over a grid of loads.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+        Where to draw.
+    Fn, Ft, a : array_like
+        2-D arrays of one shape (rows: Ft), e.g. ``TwoLevelSeta.contact_state`` on a mesh, a in
+        units of l1; NaN where there is no single equilibrium on the spatula.
+    status : array_like of int, optional
+        The contact statuses: only status-0 loads are contoured, loads with several equilibria
+        (status 6) are hatched.
+    levels : int or sequence of float
+        A number of levels between l1 and l1 + l2 (with ``l2_over_l1``), or the a/l1 values.
+    l2_over_l1 : float, optional
+        l2/l1, for the range of the levels (else the range of ``a``).
+    filled : bool
+        Shade between the levels (one design); else lines only, in ``color`` (several designs).
+    color : optional
+        Line colour when not filled.
+    label : str, optional
+        Legend label.
+    colorbar : matplotlib.figure.Figure, optional
+        A figure to draw the colour bar on.
+    **kw
+        Passed to :meth:`matplotlib.axes.Axes.contour`.
+
+    Returns
+    -------
+    matplotlib.contour.QuadContourSet or None
+        The contour lines (None when no load has a single equilibrium).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from matplotlib.figure import Figure
+    >>> import gecko, gecko.plot as gp
+    >>> Fn, Ft = np.meshgrid(np.linspace(-3, 1, 41), np.linspace(0, 9, 10))
+    >>> st = gecko.TwoLevelSeta().contact_state(Fn, Ft)
+    >>> cs = gp.contact_contours(Figure().add_subplot(), Fn, Ft, st.a, status=st.status, l2_over_l1=0.1)
+    >>> len(cs.levels)
+    9
+    """
     a = np.asarray(a, dtype=np.float64)
+    if status is not None:  # only loads with one admissible equilibrium (inadmissible ones keep a)
+        a = np.where(np.asarray(status) == 0, a, np.nan)
     finite = a[np.isfinite(a)]
     if isinstance(levels, (int, np.integer)):
         if l2_over_l1 is not None:

@@ -228,51 +228,55 @@ class ContactStatus(enum.IntEnum):
     INVALID_INPUT = 5       #: bad input under ``errors="nan"``
     SEVERAL_EQUILIBRIA = 6  #: more than one equilibrium (count in ``equilibria``; all of them with
                             #: ``all_equilibria=True``)
-    INADMISSIBLE = 7        #: reserved: the equilibrium crosses the substrate
+    INADMISSIBLE = 7        #: equilibria exist but none is admissible: the seta crosses the substrate
+                            #: before the edge, or exceeds ``strain_limit`` (values kept for drawing)
 
 
 @dataclass
 class ContactState:
-    """The forward problem's result (:meth:`TwoLevelSeta.contact_state`).
+    """The forward problem's result (``TwoLevelSeta.contact_state``): arrays in the broadcast
+    shape of (Fn, Ft), NaN (or -1 for counts) where there is no single admissible equilibrium
+    (``status`` other than 0 and 7).
 
-    Arrays in the broadcast shape of (Fn, Ft); NaN (or -1 for counts) where ``status != 0``. With
-    ``all_equilibria=True`` every per-state field has one more trailing axis, one entry per
+    With ``all_equilibria=True`` every per-state field has one more trailing axis, one entry per
     equilibrium (padded with NaN / -1), and ``state_status`` gives each entry's status (-1:
     padding); ``status`` and ``equilibria`` keep the load's shape.
 
     Attributes
     ----------
     Fn, Ft : numpy.ndarray
-        The loads.
+        The loads (broadcast).
     a : numpy.ndarray
         Non-contact length in the convected coordinate, l1 < a <= l1 + l2.
     contact_length : numpy.ndarray
         l1 + l2 - a.
     theta_joint : numpy.ndarray
-        theta2(l1).
+        theta2(l1), the spatula's angle at the joint, from the substrate normal.
     theta_rate_joint, theta_rate_base : numpy.ndarray
         theta2'(l1) and theta1'(0).
-    turning_points, turning_points_beam, turning_points_spatula : numpy.ndarray
-        Turning points of theta (beam + spatula, and each).
+    turning_points, turning_points_beam, turning_points_spatula : numpy.ndarray of int
+        Sign changes of theta' inside the free length (beam + spatula), and per segment.
     max_axial_strain : numpy.ndarray
-        Max of abs(T)/EA over the free length.
+        Largest |T|/EA over the free length.
     energy_release_rate : numpy.ndarray
-        The left side of paper 001 eq (3) at the edge (= w at every equilibrium: a check).
-    equilibria : numpy.ndarray
-        How many equilibria the load has on the spatula.
-    status : numpy.ndarray
-        :class:`ContactStatus` values; :meth:`status_names` gives their names.
-    state_status : numpy.ndarray or None
-        Per-equilibrium status with ``all_equilibria=True``.
+        Left side of eq (3) at the edge; equals w at every equilibrium (a check of the state).
+    min_z : numpy.ndarray
+        Lowest height of the seta above the substrate before the edge (< 0: inadmissible).
+    equilibria : numpy.ndarray of int
+        How many equilibria the load has with its edge on the spatula (admissible or not).
+    status : numpy.ndarray of int
+        :class:`ContactStatus` values; inadmissible states (7) keep their values, for drawing.
+    state_status : numpy.ndarray of int or None
+        With ``all_equilibria=True``: the status of each equilibrium.
 
     Examples
     --------
     >>> import gecko
-    >>> st = gecko.TwoLevelSeta().contact_state(Fn=[0.5, 0.26, 0.1], Ft=0.0)
-    >>> st.contact_length.round(6)
-    array([0.021559, 0.000907,      nan])
-    >>> st.status_names().tolist()
-    ['CONVERGED', 'CONVERGED', 'NO_CONTACT']
+    >>> st = gecko.TwoLevelSeta().contact_state([-1.0, 0.0, 3.0], 2.0)
+    >>> st.a.round(6), st.status
+    (array([1.091284, 1.006882,      nan]), array([0, 0, 4], dtype=int32))
+    >>> st.status_names()
+    array(['CONVERGED', 'CONVERGED', 'BEYOND_JOINT'], dtype=object)
     """
 
     Fn: np.ndarray
@@ -287,6 +291,7 @@ class ContactState:
     turning_points_spatula: np.ndarray
     max_axial_strain: np.ndarray
     energy_release_rate: np.ndarray
+    min_z: np.ndarray
     equilibria: np.ndarray
     status: np.ndarray
     state_status: Optional[np.ndarray] = None
@@ -298,7 +303,7 @@ class ContactState:
 
 
 _CONTACT_FLOAT = ("a", "contact_length", "theta_joint", "theta_rate_joint", "theta_rate_base",
-                  "max_axial_strain", "energy_release_rate")
+                  "max_axial_strain", "energy_release_rate", "min_z")
 _CONTACT_INT = ("turning_points", "turning_points_beam", "turning_points_spatula")
 
 
@@ -433,46 +438,51 @@ class TwoLevelSeta:
                             turning_points_spatula=shaped(d["turning_points_spatula"]))
 
     def contact_state(self, Fn, Ft, *, all_equilibria: bool = False, errors: str = "raise",
-                      scan_points: Optional[int] = None, threads: int = 0) -> ContactState:
+                      scan_points: Optional[int] = None, threads: int = 0,
+                      strain_limit: Optional[float] = None) -> ContactState:
         """The forward problem (paper 001 after eq 15): the contact state at the load (Fn, Ft).
 
-        For each load the joint angle theta2(l1) is solved from the beam's length equation along the
-        spatula's orbit through the contact edge (every root bracketed by a scan and refined to full
-        precision), then a from the spatula's. Status 0 only where exactly one equilibrium has its
-        contact edge on the spatula; loads below the critical line (no side contact), loads that would
-        push the edge onto the beam, and loads with several equilibria get their own
-        :class:`ContactStatus`.
+        ``Fn`` and ``Ft`` broadcast like numpy arrays. For each load the joint angle theta2(l1) is
+        solved from the beam's length equation along the spatula's orbit through the contact edge
+        (every root bracketed by a scan and refined to full precision), then a from the spatula's.
+        Status 0 only where exactly one equilibrium has its contact edge on the spatula; loads below
+        the critical line (no side contact), loads that would push the edge onto the beam, and loads
+        with several equilibria get their own ``ContactStatus``. ``all_equilibria=True`` returns every
+        equilibrium (see ``ContactState``). ``scan_points``: scan nodes per monotone piece of the
+        orbit (default 6). ``threads``: 0 automatic. An equilibrium whose seta crosses the substrate
+        before the edge, or whose largest axial strain exceeds ``strain_limit`` (default: no
+        limit), is inadmissible (status 7, values kept).
+
+        Bad input (NaN or infinite loads, Ft > (Ft)max = sqrt(2 EA2 w), shapes that do not
+        broadcast) raises ``ValueError`` naming the argument and its index; with ``errors="nan"`` such
+        elements get status ``INVALID_INPUT`` instead. Ft < -(Ft)max is valid input: no edge can be
+        in equilibrium there (status ``NO_CONTACT``).
 
         Parameters
         ----------
-        Fn, Ft : array_like
-            Normal and shear loads; broadcast like numpy arrays. Ft < -(Ft)max is valid input (no edge
-            can be in equilibrium there: status ``NO_CONTACT``).
-        all_equilibria : bool, optional
-            Return every equilibrium (see :class:`ContactState`).
-        errors : {"raise", "nan"}, optional
-            Bad input raises ``ValueError`` (default) or gives status ``INVALID_INPUT``.
+        Fn, Ft : float or array_like
+            Normal force (< 0 pulls off) and shear force (> 0 grips), broadcast together.
+        all_equilibria : bool
+            Return every equilibrium on a trailing axis (see :class:`ContactState`).
+        errors : {"raise", "nan"}
+            Bad elements raise ``ValueError``, or get status ``INVALID_INPUT``.
         scan_points : int, optional
-            Scan nodes per monotone piece of the orbit, 3 to 64 (default 8).
-        threads : int, optional
-            0 (default): automatic.
+            Scan nodes per monotone piece of the spatula's orbit, 3 to 64 (default 6).
+        threads : int
+            Threads of the one pool (0: automatic).
+        strain_limit : float, optional
+            Largest admissible axial strain |T|/EA (default: no limit).
 
         Returns
         -------
         ContactState
 
-        Raises
-        ------
-        ValueError
-            If a load is NaN or infinite, Ft > (Ft)max = sqrt(2 EA2 w), the shapes do not broadcast,
-            or an option is out of range; the message names the argument and its index.
-
         Examples
         --------
         >>> import gecko
-        >>> st = gecko.TwoLevelSeta().contact_state(Fn=0.5, Ft=0.0)
-        >>> round(float(st.a), 6), abs(float(st.energy_release_rate) - 1.0) < 1e-12   # = w
-        (1.078441, True)
+        >>> st = gecko.TwoLevelSeta().contact_state(-1.0, 2.0)
+        >>> round(float(st.a), 9), int(st.status), int(st.turning_points)
+        (1.091283999, 0, 0)
         """
         code = _error_code(errors)
         fn_a, ft_a = _real_array(Fn, "Fn"), _real_array(Ft, "Ft")
@@ -487,10 +497,13 @@ class TwoLevelSeta:
         sp = 0 if scan_points is None else int(scan_points)
         if scan_points is not None and not 3 <= sp <= 64:
             raise ValueError(f"scan_points = {scan_points!r} is not allowed: need 3 <= scan_points <= 64")
+        if strain_limit is not None and not float(strain_limit) >= 0:
+            raise ValueError(f"strain_limit = {strain_limit!r} is not allowed: need strain_limit >= 0")
         if int(threads) < 0:
             raise ValueError(f"threads = {threads!r} is not allowed: need threads >= 0 (0: automatic)")
         try:
-            d = _core.seta_contact_state(self._params(), fn, ft, code, bool(all_equilibria), sp, int(threads))
+            d = _core.seta_contact_state(self._params(), fn, ft, code, bool(all_equilibria), sp, int(threads),
+                                         math.nan if strain_limit is None else float(strain_limit))
         except ValueError as e:
             raise _with_index(e, shape) from None
         if not all_equilibria:

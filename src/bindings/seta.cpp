@@ -431,10 +431,10 @@ void bind_seta(py::module_& m) {
 namespace {
 
 struct contact_columns {
-  py::array_t<double> a, contact_length, theta_joint, rate_joint, rate_base, strain, err;
+  py::array_t<double> a, contact_length, theta_joint, rate_joint, rate_base, strain, err, min_z;
   py::array_t<std::int32_t> tp, tp_beam, tp_spatula, equilibria, status;
   explicit contact_columns(py::ssize_t n)
-      : a(n), contact_length(n), theta_joint(n), rate_joint(n), rate_base(n), strain(n), err(n), tp(n),
+      : a(n), contact_length(n), theta_joint(n), rate_joint(n), rate_base(n), strain(n), err(n), min_z(n), tp(n),
         tp_beam(n), tp_spatula(n), equilibria(n), status(n) {}
   void put(std::size_t i, const contact_result<double>& r) {
     a.mutable_data()[i] = r.a;
@@ -444,6 +444,7 @@ struct contact_columns {
     rate_base.mutable_data()[i] = r.theta_rate_base;
     strain.mutable_data()[i] = r.max_axial_strain;
     err.mutable_data()[i] = r.energy_release_rate;
+    min_z.mutable_data()[i] = r.min_z;
     tp.mutable_data()[i] = r.turning_points;
     tp_beam.mutable_data()[i] = r.turning_points_beam;
     tp_spatula.mutable_data()[i] = r.turning_points_spatula;
@@ -462,6 +463,7 @@ struct contact_columns {
     d["turning_points_spatula"] = tp_spatula;
     d["max_axial_strain"] = strain;
     d["energy_release_rate"] = err;
+    d["min_z"] = min_z;
     d["equilibria"] = equilibria;
     d["status"] = status;
     return d;
@@ -470,12 +472,13 @@ struct contact_columns {
 
 template <class Policy>
 py::dict contact_at(const TwoLevelSeta<double>& s, const darray& Fn, const darray& Ft, int scan_points,
-                    int threads, bool all) {
+                    int threads, bool all, double strain_limit) {
   if (Fn.ndim() != 1 || Ft.ndim() != 1 || Fn.size() != Ft.size())
     throw std::invalid_argument("gecko._core: Fn and Ft must be flat arrays of equal length");
   const auto n = static_cast<std::size_t>(Fn.size());
   contact_options<double> opt;
   if (scan_points > 0) opt.scan_points = scan_points;
+  if (strain_limit == strain_limit) opt.strain_limit = strain_limit;
   const contact_solver<double, Policy> solve(s, opt);
   const double *fn = Fn.data(), *ft = Ft.data();
   const unsigned nt = threads_for(n, threads);
@@ -512,13 +515,13 @@ py::dict contact_at(const TwoLevelSeta<double>& s, const darray& Fn, const darra
 
 void bind_seta_contact(py::module_& m) {
   m.def("seta_contact_state", [](const darray& params, const darray& Fn, const darray& Ft, int errors,
-                                 bool all, int scan_points, int threads) {
+                                 bool all, int scan_points, int threads, double strain_limit) {
     const auto s = design_from(params);
     if (errors == static_cast<int>(on_error::nan))
-      return contact_at<nan_policy>(s, Fn, Ft, scan_points, threads, all);
-    return contact_at<default_policy>(s, Fn, Ft, scan_points, threads, all);
+      return contact_at<nan_policy>(s, Fn, Ft, scan_points, threads, all, strain_limit);
+    return contact_at<default_policy>(s, Fn, Ft, scan_points, threads, all, strain_limit);
   }, py::arg("params"), py::arg("Fn"), py::arg("Ft"), py::arg("errors") = 0, py::arg("all") = false,
-     py::arg("scan_points") = 0, py::arg("threads") = 0);
+     py::arg("scan_points") = 0, py::arg("threads") = 0, py::arg("strain_limit") = std::nan(""));
 }
 
 }  // namespace bindings

@@ -29,7 +29,9 @@ def test_matches_ode_shooting_to_1e11_in_a():
         seta = gecko.TwoLevelSeta(**{k: float(r[k]) for k in FIELDS})
         st = seta.contact_state(float(r["Fn"]), float(r["Ft"]))
         where = f"{r['class']} Fn={r['Fn']} Ft={r['Ft']} design={[r[k] for k in FIELDS]}"
-        assert int(st.status) == ContactStatus.CONVERGED, where
+        # near (Ft)max the reference design dips below the substrate: inadmissible, values kept
+        assert int(st.status) in (ContactStatus.CONVERGED, ContactStatus.INADMISSIBLE), where
+        assert (int(st.status) == ContactStatus.INADMISSIBLE) == (float(st.min_z) < -1e-12 * (float(r["l1"]) + float(r["l2"])))
         assert int(st.equilibria) == 1, where
         err = abs(float(st.a) - float(r["a"]))
         worst = max(worst, err)
@@ -80,12 +82,12 @@ def test_default_scan_finds_what_a_dense_scan_finds():
 
 def test_broadcasting_and_shapes():
     seta = gecko.TwoLevelSeta()
-    st = seta.contact_state(np.array([[-1.0], [0.0], [0.5]]), np.array([0.0, 2.0, 5.0, 7.0]))
+    st = seta.contact_state(np.array([[-1.0], [0.0], [-0.5]]), np.array([0.0, 2.0, 5.0, 7.0]))
     assert st.a.shape == (3, 4) and st.status.shape == (3, 4) and st.turning_points.shape == (3, 4)
-    one = seta.contact_state(0.5, 2.0)
-    assert np.shape(one.a) == ()
+    one = seta.contact_state(-0.5, 2.0)
+    assert np.shape(one.a) == () and int(one.status) == 0
     assert float(one.a) == float(st.a[2, 1])
-    allq = seta.contact_state(np.array([[-1.0], [0.0], [0.5]]), np.array([0.0, 2.0, 5.0, 7.0]), all_equilibria=True)
+    allq = seta.contact_state(np.array([[-1.0], [0.0], [-0.5]]), np.array([0.0, 2.0, 5.0, 7.0]), all_equilibria=True)
     assert allq.a.shape[:2] == (3, 4) and allq.status.shape == (3, 4)
     ok = st.status == 0
     np.testing.assert_array_equal(allq.a[..., 0][ok], st.a[ok])
@@ -123,7 +125,7 @@ def test_bad_input_is_named():
         seta.contact_state(0.0, 0.0, errors="ignore")
     with pytest.raises(ValueError, match="scan_points"):
         seta.contact_state(0.0, 0.0, scan_points=2)
-    st = seta.contact_state(np.array([math.nan, 0.5, 0.0]), np.array([1.0, 2.0, 11.0]), errors="nan")
+    st = seta.contact_state(np.array([math.nan, -0.5, 0.0]), np.array([1.0, 2.0, 11.0]), errors="nan")
     assert list(st.status) == [ContactStatus.INVALID_INPUT, ContactStatus.CONVERGED, ContactStatus.INVALID_INPUT]
     assert math.isnan(st.a[0]) and math.isnan(st.a[2]) and math.isfinite(st.a[1])
 
@@ -172,3 +174,22 @@ def test_contact_contours_scene_checks_its_grids():
     bad2 = {"study": [{"name": "s", "model": "two_level_seta", "outputs": {"contact_contours": {"levels": 0}}}]}
     with pytest.raises(SceneError, match="levels"):
         load_scene(bad2)
+
+
+def test_inadmissible_states_keep_their_values():
+    ref = gecko.TwoLevelSeta()
+    fn = float(ref.critical_line(Ft=[9.0]).Fn[0]) + 1e-4
+    ok = ref.contact_state(fn, 9.0)
+    assert int(ok.status) == ContactStatus.CONVERGED and float(ok.max_axial_strain) > 0.17
+    lim = ref.contact_state(fn, 9.0, strain_limit=0.1)
+    assert int(lim.status) == ContactStatus.INADMISSIBLE
+    assert float(lim.a) == float(ok.a) and float(lim.theta_joint) == float(ok.theta_joint)
+    with pytest.raises(ValueError, match="strain_limit"):
+        ref.contact_state(fn, 9.0, strain_limit=-1.0)
+    soft = gecko.TwoLevelSeta(EI1=1.5, EI2=0.3, l2=0.5, alpha1=0.3, alpha2=0.6, EA1=80.0)
+    st = soft.contact_state(np.linspace(-5, 3, 41)[None, :], np.linspace(-5, 10, 41)[:, None])
+    bad = st.status == ContactStatus.INADMISSIBLE
+    assert bad.any()
+    assert np.isfinite(st.a[bad]).all() and (st.min_z[bad] < 0).all()
+    good = st.status == ContactStatus.CONVERGED
+    assert (st.min_z[good] >= -1e-12 * 1.5).all()

@@ -15,9 +15,14 @@
 // The orbit part 0 <= t <= l2 is mapped to beta (monotone pieces between the spatula's turning
 // points, theta2' changing sign at their ends); G is scanned on each piece for both signs of the
 // base rate theta1'(0) (the beam's two branches, joined where theta1'(0) = 0), every sign change
-// is refined by a bracketing solver to full precision, and a local minimum of |G| between scan
-// nodes is searched for a hidden pair of roots. Both lengths are the closed-form Carlson forms of
-// gecko/seta/elastica_segment.hpp (turning points included); nothing is integrated.
+// is refined by a bracketing solver (Brent) to full precision, and a local minimum of |G| between
+// scan nodes is searched for a hidden pair of roots. Extra nodes go where G is not smooth between
+// scan nodes: the joins of the two branches (found with a Lipschitz bound on R1(alpha1), no R_F),
+// the beam's zero-length jump at theta1(l1) = alpha1, and the edge of a stretch without beam
+// states. Both lengths are the closed-form Carlson forms of gecko/seta/elastica_segment.hpp
+// (turning points included); nothing is integrated. Each equilibrium is then checked for
+// admissibility (gecko/seta/admissibility.hpp: the seta above the substrate before the edge, an
+// optional strain limit).
 //
 // Where no equilibrium has 0 < t <= l2, G has one sign at both ends and says where the equilibrium
 // went: beyond t = l2 (the seta would need a longer spatula: a load below the critical line, where
@@ -37,13 +42,14 @@
 
 #include "gecko/core/error.hpp"
 #include "gecko/core/policy.hpp"
+#include "gecko/seta/admissibility.hpp"
 #include "gecko/seta/critical_residual.hpp"
 #include "gecko/seta/two_level_seta.hpp"
 
 namespace gecko {
 
-// What the forward solve found. 0 only when exactly one equilibrium has its contact edge on the
-// spatula (l1 < a <= l1 + l2); the numbers shared with critical_status mean the same.
+// What the forward solve found. 0 only when exactly one admissible equilibrium has its contact
+// edge on the spatula (l1 < a <= l1 + l2); the numbers shared with critical_status mean the same.
 enum class contact_status : int {
   converged = 0,
   not_converged = 1,       // a bracketed root could not be refined, or the scan could not decide
@@ -52,9 +58,11 @@ enum class contact_status : int {
                            // EA), or l2 exceeds one period of the spatula's orbit
   beyond_joint = 4,        // the contact edge would pass the joint onto the beam (outside the model)
   invalid_input = 5,       // bad input under nan_policy
-  several_equilibria = 6,  // more than one equilibrium with l1 < a <= l1 + l2 (see `equilibria`;
-                           // contact_equilibria returns all of them)
-  inadmissible = 7         // reserved: the equilibrium crosses the substrate
+  several_equilibria = 6,  // more than one admissible equilibrium with l1 < a <= l1 + l2 (see
+                           // `equilibria`; contact_equilibria returns all of them)
+  inadmissible = 7         // equilibria exist, but none is admissible: the seta crosses the substrate
+                           // before the edge (joint or beam below z = 0) or exceeds the strain limit;
+                           // the (first) state's values are kept for drawing
 };
 
 template <class T>
@@ -73,7 +81,10 @@ struct contact_result {
   // Left side of eq (3) at the edge, 1/2 EI2 theta2'(a)^2 + T(pi/2)^2/(2 EA2), from the solved
   // spatula state: equal to w at every equilibrium (it is the condition that fixes a).
   T energy_release_rate = std::numeric_limits<T>::quiet_NaN();
-  int equilibria = 0;  // equilibria found with l1 < a <= l1 + l2
+  // Lowest height of the seta above the substrate over 0 <= s <= a (0 at the edge; < 0:
+  // inadmissible), from gecko/seta/admissibility.hpp.
+  T min_z = std::numeric_limits<T>::quiet_NaN();
+  int equilibria = 0;  // equilibria found with l1 < a <= l1 + l2 (admissible or not)
   contact_status status = contact_status::not_converged;
 };
 
@@ -85,6 +96,8 @@ struct contact_options {
   // A root within this (relative to l1 + l2) of t = l2 is the critical state itself and counts
   // as an equilibrium with a = l1 + l2 (the critical line is the boundary of contact).
   T edge_tolerance = T(1e-12);
+  // Equilibria whose largest axial strain |T|/EA exceeds this are inadmissible (status 7).
+  T strain_limit = std::numeric_limits<T>::infinity();
 };
 
 namespace detail {
@@ -272,8 +285,10 @@ struct forward_problem {
     }
     if (with_beam) {
       const T r1 = R1v(v, o.p);
-      if (!(r1 >= 0)) return false;
-      o.q = r1 > 0 ? (sq >= 0 ? sqrt(r1) : -sqrt(r1)) : T(0);
+      // R1 = 0 (theta1'(0) = 0, where the two base-rate branches join) rounds either way.
+      const T r1_tol = 64 * std::numeric_limits<T>::epsilon() * (ratio * o.p * o.p + 2 * N);
+      if (!(r1 >= -r1_tol)) return false;
+      o.q = signed_sqrt(r1, sq);
       T M1 = ratio * o.p * o.p + N * v;
       if constexpr (E1) M1 += d.c1 * N * N * v * v / 2;
       const auto g1 = make_segment<E1>(d.EI1, d.c1, M1, N);
@@ -390,10 +405,15 @@ inline bool orbit_pieces(const FP& fp, orbit_piece<T> pieces[3], int& count, boo
   const T beta_min = fp.phi - pi - astar + shift * two_pi;
   const T beta_max = fp.phi + astar + shift * two_pi;
   // Piece 1: theta2'(l1) > 0, beta from pi/2 down to the lower turning point. Most loads end
-  // there (t = l2 before the turning point): try that first, without measuring the piece.
+  // there (t = l2 before the turning point): when a lower bound of the piece's length says so,
+  // invert without measuring the piece. The bound: t1 >= (pi/2 - beta_min) / max theta2', with
+  // theta2'^2 = 2 R2(u)/EI2 largest at u = -1 (R2 concave, vertex at u = -1/(c2 N) when inside).
   {
+    T R2max = g.M + fp.N - fp.d.c2 * fp.N * fp.N / 2;
+    if (fp.d.c2 * fp.N > 1) R2max = g.M + 1 / (2 * fp.d.c2);
+    const T t1_low = R2max > 0 ? (half_pi - beta_min) / std::sqrt(2 * R2max / fp.d.EI2) : T(0);
     T beta = 0;
-    if (invert_spatula(fp, 1, beta_min, half_pi, T(1), l2, guess1, beta)) {
+    if (t1_low > l2 && invert_spatula(fp, 1, beta_min, half_pi, T(1), l2, guess1, beta)) {
       pieces[count++] = {half_pi, beta, 1};
       return true;
     }
@@ -401,8 +421,10 @@ inline bool orbit_pieces(const FP& fp, orbit_piece<T> pieces[3], int& count, boo
   const T t1 = fp.L2(beta_min, 1, &unsupported);
   if (unsupported) return false;
   if (!(t1 == t1)) return false;
-  if (l2 <= t1) {  // the turning point itself (or rounding at it)
-    pieces[count++] = {half_pi, beta_min, 1};
+  if (l2 <= t1) {
+    T beta = 0;
+    if (!invert_spatula(fp, 1, beta_min, half_pi, t1 - l2, l2, guess1, beta)) beta = beta_min;
+    pieces[count++] = {half_pi, beta, 1};
     return true;
   }
   pieces[count++] = {half_pi, beta_min, 1};
@@ -494,6 +516,7 @@ inline contact_status contact_solve(const seta_params<T>& d, T Fn, T Ft, const c
     r.theta_rate_base = k1;
     r.turning_points = r.turning_points_beam = r.turning_points_spatula = 0;
     r.max_axial_strain = 0;
+    r.min_z = 0;  // theta rises monotonically from alpha1 to pi/2: z falls to the edge
     r.energy_release_rate = d.w;
     r.equilibria = 1;
     r.status = contact_status::converged;
@@ -520,6 +543,7 @@ inline contact_status contact_solve(const seta_params<T>& d, T Fn, T Ft, const c
     int sp;      // joint rate sign on the interval from the previous node to this one
     T G[2];      // NaN: no state on this branch; +inf: known positive (not evaluated)
     bool join;   // a point where theta1'(0) = 0 (the two branches meet)
+    T r1;        // R1(alpha1) = 1/2 EI1 theta1'(0)^2 there (< 0: no beam reaches this joint state)
   };
   node nodes[max_nodes];
   int nn = 0;
@@ -533,6 +557,7 @@ inline contact_status contact_solve(const seta_params<T>& d, T Fn, T Ft, const c
     fp.joint_sines(x.beta, ub, vj);
     const T p = FP::signed_sqrt(fp.R2u(ub), x.sp);
     const T r1 = fp.R1v(vj, p);
+    x.r1 = r1;
     x.G[0] = x.G[1] = nan;
     if (!(r1 >= 0)) return;
     const int s_short = (x.beta - d.alpha2 - d.alpha1 >= 0) ? 1 : -1;
@@ -568,6 +593,11 @@ inline contact_status contact_solve(const seta_params<T>& d, T Fn, T Ft, const c
     if (fp.eval(x.beta, x.sp, -s_short, o, true, false)) x.G[1 - i_short] = o.G;
     else if (o.unsupported) unsupported = true;
   };
+  // At theta1(l1) = alpha1 (beta = alpha1 + alpha2) the beam's path with theta1'(0) of the joint
+  // rate's sign shrinks to nothing on one side (G -> -l1) and jumps to a whole period on the other:
+  // nodes on both sides of it keep the roots next to that jump bracketed.
+  const T beta_jump = d.alpha1 + d.alpha2;
+  const T jump_gap = T(1e-9) * (1 + fabs(beta_jump));
   for (int k = 0; k < n_pieces; ++k) {
     const auto& pc = pieces[k];
     for (int j = (k == 0 ? 0 : 1); j < n_scan; ++j) {
@@ -575,9 +605,50 @@ inline contact_status contact_solve(const seta_params<T>& d, T Fn, T Ft, const c
       x.beta = j == n_scan - 1 ? pc.beta_to : pc.beta_from + (pc.beta_to - pc.beta_from) * T(j) / T(n_scan - 1);
       x.sp = pc.sp;
       x.join = false;
+      if (nn > 0 && (nodes[nn - 1].beta - beta_jump) * (x.beta - beta_jump) < 0) {
+        const T dir = x.beta > nodes[nn - 1].beta ? T(1) : T(-1);
+        for (const T side : {-dir, dir}) {
+          node y = x;
+          y.beta = beta_jump + side * jump_gap;
+          fill(y);
+          nodes[nn++] = y;
+        }
+      }
       fill(x);
       nodes[nn++] = x;
     }
+  }
+  // A branch without a beam state beyond some beta (the beam's orbit turning from libration to
+  // rotation, where its period diverges and G with it): bisect towards that boundary so that the
+  // last defined stretch has a node (a few evaluations, only where it happens).
+  {
+    node more[max_nodes];
+    int nm = 0;
+    for (int i = 0; i < nn; ++i) {
+      if (i > 0 && nm + 2 < max_nodes) {  // the interval belongs to node i's piece (its sp)
+        for (int b = 0; b < 2; ++b) {
+          const bool d0 = nodes[i - 1].G[b] == nodes[i - 1].G[b], d1 = nodes[i].G[b] == nodes[i].G[b];
+          if (d0 == d1 || !(nodes[i - 1].r1 > 0) || !(nodes[i].r1 > 0)) continue;
+          T lo = d0 ? nodes[i - 1].beta : nodes[i].beta, hi = d0 ? nodes[i].beta : nodes[i - 1].beta;
+          node last;
+          bool have = false;
+          for (int it = 0; it < 6; ++it) {
+            node y;
+            y.beta = (lo + hi) / 2;
+            y.sp = nodes[i].sp;
+            y.join = false;
+            fill(y);
+            if (y.G[b] == y.G[b]) { lo = y.beta; last = y; have = true; }
+            else hi = y.beta;
+          }
+          if (have) more[nm++] = last;  // between nodes i - 1 and i
+          break;
+        }
+      }
+      more[nm++] = nodes[i];
+    }
+    for (int i = 0; i < nm; ++i) nodes[i] = more[i];
+    nn = nm;
   }
   // The actual value of a known-positive entry.
   auto resolve = [&](int i, int b) {
@@ -606,31 +677,64 @@ inline contact_status contact_solve(const seta_params<T>& d, T Fn, T Ft, const c
     if (!(fabs(gr) <= tolG)) return;  // a jump of the shortest-path convention, not a root
     add_root(root, sp, sq);
   };
-  // Joins: where R1(alpha1) changes sign between nodes, locate theta1'(0) = 0 and insert it.
+  // Joins: where R1(alpha1) changes sign between nodes, theta1'(0) = 0 and the two base-rate
+  // branches meet; a beam state exists only where R1 >= 0. R1(beta) on the orbit is a
+  // trigonometric polynomial with |dR1/dbeta| <= K = (EI2/EI1)(N + N^2/(2 EA2)) + N + N^2/(2 EA1)
+  // (eqs 4, 12), so an interval whose end values satisfy |R1_l| + |R1_r| > K h has no sign change
+  // inside unless the ends differ in sign; otherwise it is bisected (R1 costs one sincos, no R_F).
+  // Each sign change becomes a join node, and each defined stretch between two of them gets a
+  // node of its own: no root next to a region without beam states is lost.
   {
+    const T K = fp.ratio * (fp.N + d.c2 * fp.N * fp.N / 2) + fp.N + d.c1 * fp.N * fp.N / 2;
     node merged[max_nodes];
     int nm = 0;
+    T changes[32];
+    int nc = 0;
+    auto R1_at = [&](T beta) { return fp.R1_on(beta, 1); };
+    auto collect = [&](auto&& self, T b0, T r0, T b1, T r1v, int depth) -> void {
+      if (nc >= 32 || !(r0 == r0) || !(r1v == r1v)) return;
+      if ((r0 >= 0) != (r1v >= 0)) {
+        T bj = 0;
+        auto f = [&](T beta) { return R1_at(beta); };
+        if (brent_root(f, b0, b1, r0, r1v, bj)) changes[nc++] = bj;
+        return;
+      }
+      if (depth >= 12 || fabs(r0) + fabs(r1v) > K * fabs(b1 - b0)) return;
+      const T bm = (b0 + b1) / 2, rm = R1_at(bm);
+      self(self, b0, r0, bm, rm, depth + 1);
+      self(self, bm, rm, b1, r1v, depth + 1);
+    };
+    auto join_node = [&](T bj, int sp) {
+      node x;
+      x.beta = bj;
+      x.sp = sp;
+      x.join = true;
+      x.r1 = 0;
+      typename FP::eval_out o;
+      // At the join q = 0: one state, on both branches.
+      const T g = fp.eval(bj, sp, 1, o, true, false) ? o.G : nan;
+      x.G[0] = x.G[1] = g;
+      return x;
+    };
     for (int i = 0; i < nn; ++i) {
-      if (i > 0) {
-        const bool def_prev = nodes[i - 1].G[0] == nodes[i - 1].G[0] || nodes[i - 1].G[1] == nodes[i - 1].G[1];
-        const bool def_here = nodes[i].G[0] == nodes[i].G[0] || nodes[i].G[1] == nodes[i].G[1];
-        if (def_prev != def_here && nm + 1 < max_nodes) {
-          const int sp = nodes[i].sp;
-          auto r1 = [&](T beta) { return fp.R1_on(beta, sp); };
-          const T b0 = nodes[i - 1].beta, b1 = nodes[i].beta;
-          const T f0 = r1(b0), f1 = r1(b1);
-          T bj = 0;
-          if ((f0 >= 0) != (f1 >= 0) && brent_root(r1, b0, b1, f0, f1, bj)) {
+      if (i > 0 && nm + 8 < max_nodes) {
+        nc = 0;
+        collect(collect, nodes[i - 1].beta, nodes[i - 1].r1, nodes[i].beta, nodes[i].r1, 0);
+        const int sp = nodes[i].sp;
+        T prev_b = nodes[i - 1].beta;
+        bool prev_def = nodes[i - 1].r1 >= 0;
+        for (int k = 0; k < nc && nm + 3 < max_nodes; ++k) {
+          if (k > 0 && prev_def) {  // a defined stretch between two joins: a node inside
             node x;
-            x.beta = bj;
+            x.beta = (prev_b + changes[k]) / 2;
             x.sp = sp;
-            x.join = true;
-            typename FP::eval_out o;
-            // At the join q = 0: one state, on both branches.
-            const T g = fp.eval(bj, sp, 1, o, true, false) ? o.G : nan;
-            x.G[0] = x.G[1] = g;
+            x.join = false;
+            fill(x);
             merged[nm++] = x;
           }
+          merged[nm++] = join_node(changes[k], sp);
+          prev_b = changes[k];
+          prev_def = !prev_def;
         }
       }
       merged[nm++] = nodes[i];
@@ -730,12 +834,30 @@ inline contact_status contact_solve(const seta_params<T>& d, T Fn, T Ft, const c
     r.max_axial_strain = strain;
     // Eq (3), left side: 1/2 EI2 theta2'(a)^2 = R2(pi/2) (eq 12), T(pi/2) = N cos(phi) = Ft.
     r.energy_release_rate = fp.R2(half_pi) + d.c2 * Ft * Ft / 2;
-    r.status = contact_status::converged;
+    // Admissibility (gecko/seta/admissibility.hpp): the seta must stay on its side of the
+    // substrate before the edge (and within the caller's strain limit); else status 7, with the
+    // state's values kept for drawing.
+    seta_pose<T> pose{Fn, Ft, r.theta_joint, r.theta_rate_base, r.theta_rate_joint, r.turning_points_beam,
+                      r.turning_points_spatula, r.a - d.l1};
+    const auto adm = admissibility_imp(d, pose, opt.strain_limit);
+    r.min_z = adm.min_z;
+    if (adm.max_axial_strain == adm.max_axial_strain) r.max_axial_strain = adm.max_axial_strain;
+    r.status = adm.admissible ? contact_status::converged : contact_status::inadmissible;
     eq[n_eq++] = r;
   }
-  for (int i = 0; i < n_eq; ++i) eq[i].equilibria = n_eq;
-  if (n_eq == 1) return contact_status::converged;
-  if (n_eq > 1) return contact_status::several_equilibria;
+  int n_adm = 0, first_adm = -1;
+  for (int i = 0; i < n_eq; ++i) {
+    eq[i].equilibria = n_eq;
+    if (eq[i].status == contact_status::converged && n_adm++ == 0) first_adm = i;
+  }
+  if (n_adm == 1) {  // the one admissible equilibrium first
+    const contact_result<T> keep = eq[first_adm];
+    for (int i = first_adm; i > 0; --i) eq[i] = eq[i - 1];
+    eq[0] = keep;
+    return contact_status::converged;
+  }
+  if (n_adm > 1) return contact_status::several_equilibria;
+  if (n_eq > 0) return contact_status::inadmissible;
   if (unsupported) return contact_status::unsupported_state;
   if (refine_failed) return contact_status::not_converged;
   // No equilibrium on the spatula: why (header comment). G at the ends (t = 0: the edge at the
@@ -798,7 +920,10 @@ class contact_solver {
     contact_result<T> eq[detail::max_contact_equilibria];
     int n = 0;
     const contact_status st = solve(Fn, Ft, eq, n);
-    if (st == contact_status::converged) return eq[0];
+    if (st == contact_status::converged || st == contact_status::inadmissible) {
+      eq[0].status = st;
+      return eq[0];
+    }
     contact_result<T> r;
     r.Fn = Fn;
     r.Ft = Ft;
