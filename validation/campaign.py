@@ -41,6 +41,7 @@ from . import verify  # noqa: E402
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))  # where "-m validation.campaign" runs
 FIELDS = ("EI1", "EI2", "EA1", "EA2", "l1", "l2", "alpha1", "alpha2", "w")
 WRONG_REL = 1e-8
+INADMISSIBLE = 7  # the critical status that keeps Fn and beta (gecko.CriticalStatus.inadmissible)
 
 
 def sample_designs(n, rng, p_inf=0.2):
@@ -171,7 +172,8 @@ def classify(P, FT, Fn, beta, status, v):
     wrong_fn = ok & conclusive_fn & ~(rel <= WRONG_REL)
     wrong_beta = ok & conclusive_fn & conclusive_beta & ~(np.abs(v["dbeta"]) <= WRONG_REL)
     nonfinite_ok = ok & ~(np.isfinite(Fn) & np.isfinite(beta))
-    number_with_status = (status != 0) & (np.isfinite(Fn) | np.isfinite(beta))
+    # status 7 (inadmissible: solves the equations, the seta crosses the substrate) keeps its values
+    number_with_status = (status != 0) & (status != INADMISSIBLE) & (np.isfinite(Fn) | np.isfinite(beta))
     return dict(rel=rel, wrong_fn=wrong_fn, wrong_beta=wrong_beta, nonfinite_ok=nonfinite_ok,
                 number_with_status=number_with_status, inconclusive_fn=ok & ~conclusive_fn,
                 inconclusive_beta=ok & ~conclusive_beta)

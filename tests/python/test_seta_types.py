@@ -91,6 +91,16 @@ def test_the_joint_angle_condition_is_checked_after_the_fields():
         SetaDesign.admissible("EI3", 1.0)
 
 
+def test_construction_takes_the_fields_by_name_only():
+    with pytest.raises(TypeError, match="unknown field 'EI3'; the fields are EI1, EI2, EA1"):
+        SetaDesign(EI3=1.0)
+    with pytest.raises(TypeError):
+        SetaDesign(5.0)
+    with pytest.raises(TypeError, match="EI1 must be a number"):
+        SetaDesign(EI1="stiff")
+    assert SetaDesign(EI1=7) == SetaDesign(EI1=7.0)
+
+
 def test_designs_are_read_only_values():
     d = SetaDesign()
     with pytest.raises(AttributeError):
