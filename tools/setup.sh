@@ -25,7 +25,7 @@ if [ ! -x .venv/bin/python ]; then
 fi
 .venv/bin/python -m pip install -q --upgrade pip
 .venv/bin/python -m pip install -q numpy scipy mpmath pytest matplotlib \
-    pandas pyarrow "dask[distributed]" atheris   # sweeps (gecko[sweep]) and the scene-parser fuzzer
+    pandas pyarrow "dask[distributed]" atheris   # sweeps ([sweep], [dask] extras) and the scene-parser fuzzer
 # The package itself, built in an isolated environment exactly as a user's `pip install .`
 # (scikit-build-core + pybind11 + cmeel-eigen come from PyPI as build requirements).
 .venv/bin/python -m pip install -q .

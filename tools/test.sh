@@ -34,3 +34,5 @@ echo "== Python tests (OPENBLAS_CORETYPE unset)"
 env -u OPENBLAS_CORETYPE .venv/bin/python -m pytest -q tests/python
 echo "== Python tests (OPENBLAS_CORETYPE=Haswell)"
 OPENBLAS_CORETYPE=Haswell .venv/bin/python -m pytest -q tests/python
+echo "== Documentation (tools/docs.sh: warnings are errors, tutorials executed)"
+bash tools/docs.sh

@@ -1,4 +1,4 @@
-// bench/friction/bench_beam.cpp — rigidity of a curved beam by Castigliano (models.md §2):
+// bench/friction/bench_beam.cpp — rigidity of a curved beam by Castigliano (docs/theory/frictional_adhesion.md):
 // run time and error of gecko's tanh-sinh quadrature (explicit slope, complex-step slope, a few
 // tolerances), the Appendix-1 closed form, and GSL's adaptive QAGS (the peer) on the same
 // integrals in the original variable x. Errors against tests/data/beam_reference.csv (mpmath).

@@ -1,4 +1,4 @@
-// bench/friction/bench_friction.cpp — the friction kernels in C++ (models.md §2): steady
+// bench/friction/bench_friction.cpp — the friction kernels in C++ (docs/theory/frictional_adhesion.md): steady
 // sliding over 1e6 velocities (both Fig 6 presets), the spatula simulation and the fit.
 // Errors: the batch is checked against eqs 9–10 written out directly (max relative difference).
 //

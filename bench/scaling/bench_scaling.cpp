@@ -1,7 +1,7 @@
 // bench/scaling/bench_scaling.cpp — throughput and scaling of the two-level seta critical line
 // (issue 6 item 2), through the batch call gecko::critical_line_batch (gecko/seta/batch.hpp).
 //
-//   * lines/s for the reference scene (models.md §1 defaults) and for random designs (the box of
+//   * lines/s for the reference scene (docs/theory/two_level_seta.md defaults) and for random designs (the box of
 //     bench/seta/bench_seta.cpp), 1 and 2 threads, results compared bitwise between thread counts;
 //   * time against points per line (reference scene, one design) and against designs per batch
 //     (random designs, 20 points each), with a least-squares fit of log t against log n (slope 1:

@@ -177,7 +177,7 @@ def write_md(res, path):
     L.append(f"- Machine: {m.get('cpu', '?')}, {m.get('cpus', '?')} CPUs, **shared with other jobs** "
              f"(load average at the end: {m.get('loadavg', '?')}); timings are noisy, the 2-thread "
              "numbers most of all (a second core is often busy).\n")
-    L.append("- Reference scene: models.md §1 defaults, Ft = linspace(0, 9.9, points). Random designs: the box "
+    L.append("- Reference scene: docs/theory/two_level_seta.md defaults, Ft = linspace(0, 9.9, points). Random designs: the box "
              "of bench/seta (EI1 in [0.5, 50], EI2/EI1 in [0.05, 2], l2 in [0.02, 0.5], alpha1 in [pi/18, "
              "pi/3], alpha2 in [0, pi/2 - 0.15 - alpha1], EA2 in [10, 1000], EA1 = inf); the batch call "
              "shares one Ft grid, linspace(0, 0.99 sqrt(20), points) (0.99 of the smallest (Ft)max of the box).\n")

@@ -1,15 +1,13 @@
 #!/usr/bin/env python3
-"""Times the scipy peer (../shared/peers/critical_line_scipy.py) and the gecko Python call on the
+"""Times the scipy peer (bench/seta/scipy_peer.py, quad + fsolve) and the gecko Python call on the
 same 1000-point reference-scene line as bench_seta, in the same run (bench/seta/run.sh), and
 appends both rows to bench/results/seta.md / seta.csv.
 
 The peer's error is measured against gecko's own line (tolerance 1e-14, itself within 4e-14 of the
 mpmath references in tests/data/seta_reference.csv); the peer only handles monotone states, which
 the reference scene has up to Ft = 9.9.
-    python3 bench/seta/peer_scipy.py [path/to/critical_line_scipy.py] [--points 1000]
+    python3 bench/seta/peer_scipy.py [--points 1000]
 """
-import importlib.util
-import math
 import os
 import sys
 import time
@@ -20,24 +18,22 @@ import gecko
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, HERE)
+
+import scipy_peer as peer  # noqa: E402  (bench/seta/scipy_peer.py, no gecko code)
 
 
 def main():
-    peer_path = next((a for a in sys.argv[1:] if a.endswith(".py")),
-                     os.path.join(ROOT, "..", "shared", "peers", "critical_line_scipy.py"))
     n = 1000
     if "--points" in sys.argv:
         n = int(sys.argv[sys.argv.index("--points") + 1])
-    spec = importlib.util.spec_from_file_location("peer", peer_path)
-    peer = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(peer)
     Ft = np.linspace(0.0, 9.9, n)
     seta = gecko.TwoLevelSeta()
     ref = seta.critical_line(Ft=Ft, tolerance=1e-14).Fn
     t = time.process_time()
-    line = peer.critical_line(peer.REFERENCE, Ft)
+    fn_peer, _beta, ok = peer.critical_line(peer.REFERENCE, Ft)
     dt_peer = (time.process_time() - t) / n * 1e6
-    fn_peer = np.array([p[1] if p[3] else np.nan for p in line])
+    fn_peer = np.where(ok, fn_peer, np.nan)
     err_peer = np.nanmax(np.abs(fn_peer - ref) / np.maximum(1, np.abs(ref)))
     failed_peer = int(np.sum(~np.isfinite(fn_peer)))
     times = []

@@ -7,9 +7,9 @@
 //                   boost::math::ellint_rd / ellint_rj with promote_double<false>;
 //                   gsl_sf_ellint_RD / _RJ at GSL_PREC_DOUBLE / _SINGLE / _APPROX.
 //                   Inputs and 40-digit mpmath references: bench/tradeoff/gen_inputs.py.
-//   segment length  gecko::elastica_segment_length (models.md §1, lengths in Carlson form), full
+//   segment length  gecko::elastica_segment_length (docs/theory/two_level_seta.md, lengths in Carlson form), full
 //                   and precision<Bits>; peers: what a researcher writes, the length integral
-//                   sqrt(EI/2) * int dtheta / sqrt(R(theta)) (models.md §1 first integral) split at
+//                   sqrt(EI/2) * int dtheta / sqrt(R(theta)) (docs/theory/two_level_seta.md first integral) split at
 //                   the turning angles, by GSL QAGS and by Boost's tanh_sinh, at several
 //                   tolerances. Inputs and 40-digit mpmath references (independent quadrature):
 //                   tests/data/seta_solver_segments.csv, 160 segments with 0, 1, 2 turning points.

@@ -31,7 +31,6 @@ COMMANDS = {
     "friction_python.md": "python3 bench/friction/bench_steady_sliding.py --out bench/results",
     "scenes.md": "python3 bench/scenes/bench_scenes.py",
     "scaling.md": "bench/scaling/run.sh",
-    "stress.md": "python3 bench/stress/report.py bench/stress/stress_10000.npz",
 }
 RENDERED = {"tradeoff.md", "elliptic.md", "seta.md", "scaling.md"}
 
@@ -254,7 +253,7 @@ def render(results):
              "precision setting and GSL mode, and the error quartiles). scipy and gecko's Python functions are "
              "called once on the whole array (per-element time).",
              elliptic_section(rows, results),
-             "### One elastica segment\n\nLength of one elastica segment (models.md §1, the 160 mpmath segments of "
+             "### One elastica segment\n\nLength of one elastica segment (docs/theory/two_level_seta.md, the 160 mpmath segments of "
              "`tests/data/seta_solver_segments.csv`, each reference from independent 40-digit quadrature). The "
              "peers integrate the first integral √(EI/2)∫dθ/√R(θ) split at the turning angles, the way a script "
              "would; at a turning point R vanishes and the integrand is singular, which limits them there:",

@@ -1,4 +1,4 @@
-// gecko/beam.hpp — curved-beam compliance and rigidity by Castigliano (models.md §2).
+// gecko/beam.hpp — curved-beam compliance and rigidity by Castigliano (docs/theory/frictional_adhesion.md).
 #pragma once
 
 #include "gecko/beam/castigliano.hpp"

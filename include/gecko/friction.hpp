@@ -1,4 +1,4 @@
-// gecko/friction.hpp — frictional adhesion dynamics of paper 000 (models.md §2): force traces,
+// gecko/friction.hpp — frictional adhesion dynamics of paper 000 (docs/theory/frictional_adhesion.md): force traces,
 // detachment laws, steady sliding, the spatula simulation and the steady-sliding fit.
 #pragma once
 

@@ -1,4 +1,4 @@
-// gecko/seta.hpp — the two-level seta of directional adhesion (models.md §1) and the single
+// gecko/seta.hpp — the two-level seta of directional adhesion (docs/theory/two_level_seta.md) and the single
 // fiber of He et al. 2013.
 //
 //   TwoLevelSeta<T>, ft_max                      the design (defaults: the paper's reference scene)
@@ -14,12 +14,15 @@
 //   critical_equations(seta, Ft, ...)            residual and exact Jacobian at a state
 //   sensitivities(seta, Ft)                      dFn/d(design) by implicit differentiation
 //   shape(seta, state)                           deformed shape x(s), z(s) of a solved state
+//   contact_state(seta, Fn, Ft)                  the forward problem: contact length at a load
+//   contact_equilibria(seta, Fn, Ft)             ... every equilibrium there
 //   SingleFiber<T>                               the single-level fiber (Fig 4)
 #pragma once
 
 #include "gecko/seta/batch.hpp"
 #include "gecko/seta/characteristics.hpp"
 #include "gecko/seta/characteristics_batch.hpp"
+#include "gecko/seta/contact_state.hpp"
 #include "gecko/seta/critical_line.hpp"
 #include "gecko/seta/elastica_segment.hpp"
 #include "gecko/seta/solve_critical.hpp"

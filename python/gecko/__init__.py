@@ -6,9 +6,9 @@ Compiled kernels (the C++ header-only library, built here as ``gecko._core``), w
   symmetric forms ``carlson_rf``, ``carlson_rd``, ``carlson_rj``, ``carlson_rc``; all broadcast
   like numpy ufuncs and raise ``ValueError`` on a domain error (or give NaN with ``errors="nan"``).
 * ``gecko.seta``: ``TwoLevelSeta`` and its exact critical line of adhesion, ``SingleFiber``,
-  the Kendall and Rivlin peel lines, small-deformation formulas (models.md §1).
+  the Kendall and Rivlin peel lines, small-deformation formulas (docs/theory/two_level_seta.md).
 * ``gecko.friction``: curved-beam rigidity, force traces, detachment laws, steady sliding,
-  spatula simulation and fitting (models.md §2).
+  spatula simulation and fitting (docs/theory/frictional_adhesion.md).
 * ``gecko.scene``: declarative scenes (TOML or dict) that compute only what they ask for.
   Plotting lives in ``gecko.plot`` and is not imported here (it imports matplotlib).
 
@@ -24,9 +24,9 @@ from .friction import *  # noqa: F401,F403
 from .scene import SceneError, load_scene, run_scene, validate_scene
 from . import design_sweep as _design_sweep
 from .design_sweep import *  # noqa: F401,F403
-from . import design_optimize as _design_optimize
-from .design_optimize import *  # noqa: F401,F403
+from . import optimize as _optimize
+from .optimize import *  # noqa: F401,F403
 
 __all__ = ["__version__", *_elliptic.__all__, *_seta.__all__, *_friction.__all__,
-           *_design_sweep.__all__, *_design_optimize.__all__,
+           *_design_sweep.__all__, *_optimize.__all__,
            "SceneError", "load_scene", "run_scene", "validate_scene"]

@@ -77,3 +77,75 @@ def seta_shape(params: _F64, Ft: float, steps: int = 200) -> dict[str, Any]: ...
 def fiber_critical_line_at(params: _F64, Ft: _F64, errors: int = 0, tolerance: float = ...) -> dict[str, Any]: ...
 def kendall_fn(Ft: _F64, EA: _F64, w: _F64, errors: int = 0) -> _F64: ...
 def rivlin_fn(Ft: _F64, w: _F64, errors: int = 0) -> _F64: ...
+
+# ---- seta domain types (src/bindings/seta_types.cpp) -----------------------------------------
+import enum
+
+class SetaDesign:
+    """A two-level seta design, validated on construction (ValueError naming the field and range)."""
+    fields: tuple[str, ...]
+    defaults: dict[str, float]
+    # name -> (lower, upper, lower inclusive, infinity allowed, the range as the error states it)
+    domain: dict[str, tuple[float, float, bool, bool, str]]
+    descriptions: dict[str, str]
+    def __init__(self, *, EI1: float = ..., EI2: float = ..., EA1: float = ..., EA2: float = ...,
+                 l1: float = ..., l2: float = ..., alpha1: float = ..., alpha2: float = ...,
+                 w: float = ...) -> None: ...
+    @staticmethod
+    def admissible(name: str, value: float) -> bool: ...
+    @property
+    def EI1(self) -> float: ...
+    @property
+    def EI2(self) -> float: ...
+    @property
+    def EA1(self) -> float: ...
+    @property
+    def EA2(self) -> float: ...
+    @property
+    def l1(self) -> float: ...
+    @property
+    def l2(self) -> float: ...
+    @property
+    def alpha1(self) -> float: ...
+    @property
+    def alpha2(self) -> float: ...
+    @property
+    def w(self) -> float: ...
+    @property
+    def ft_max(self) -> float: ...
+    def check_ft(self, Ft: float) -> None: ...
+    def to_array(self) -> _F64: ...
+
+class CriticalStatus(enum.IntEnum):
+    converged = 0
+    not_converged = 1
+    no_critical_state = 2
+    unsupported_state = 3
+    singular = 4
+    invalid_input = 5
+    not_reached = 6
+    inadmissible = 7
+
+class LineEnd(enum.IntEnum):
+    reached_ft_end = 0
+    reached_ft_max = 1
+    turned_back = 2
+    no_convergence = 3
+    unsupported_state = 4
+    max_points = 5
+    no_natural_state = 6
+    stalled = 7
+
+class MinimumStatus(enum.IntEnum):
+    stationary = 0
+    range_start = 1
+    range_end = 2
+    line_incomplete = 3
+    not_certified = 4
+    admissible_end = 5
+    no_admissible_state = 6
+
+class FitStatus(enum.IntEnum):
+    converged = 0
+    max_iterations = 1
+    singular = 2

@@ -6,7 +6,8 @@
     gecko figures --out DIR [--only NAME ...] [--list]
     gecko models
 
-Exit status: 0 done, 2 bad scene or bad command line, 1 a computation failed.
+Exit status: 0 done, 1 the run failed, 2 bad command line, scene or environment variable,
+130 interrupted (EXIT_CODES).
 """
 from __future__ import annotations
 
@@ -16,6 +17,18 @@ import sys
 import time
 from pathlib import Path
 from typing import List, Optional
+
+from ._optional import MissingOptionalDependency
+
+#: the one table of exit statuses, for every command (written out in EPILOG too)
+EXIT_OK, EXIT_FAILED, EXIT_USAGE, EXIT_INTERRUPTED = 0, 1, 2, 130
+EXIT_CODES = {
+    EXIT_OK: "done",
+    EXIT_FAILED: "the run failed (a computation, a full disk, another run writing the same sweep)",
+    EXIT_USAGE: "bad command line, scene or environment variable, or an output folder that cannot be "
+                "created or written to: found before anything is computed",
+    EXIT_INTERRUPTED: "interrupted (Ctrl-C): finished sweep work is kept; run the same command to resume",
+}
 
 EPILOG = """\
 usage of each command (gecko COMMAND --help for details):
@@ -50,11 +63,44 @@ progress:
   A progress bar is shown on a terminal for work that lasts more than a second; nothing
   when stderr is not a terminal, or with --quiet.
 
+limits (checked by validate, plan and run before computing; each an integer >= 1):
+  GECKO_MAX_DESIGNS     designs one scene may compute (studies and [sweep]); default 100000000
+  GECKO_MAX_MEMORY_MB   estimated memory of its results, MiB; default half the machine's memory
+  GECKO_RESOLUTION      default for --resolution: a number in (0, 100]
+
+exit status (every command):
+  0    done
+  1    the run failed (a computation, a full disk, another run writing the same sweep)
+  2    bad command line, scene or environment variable, or an output folder that cannot be
+       created or written to: found before anything is computed
+  130  interrupted (Ctrl-C): finished sweep work is kept; run the same command to resume
+
 examples:
   gecko run examples/demo_reference_critical_line.toml --out out/
   gecko figures --out figures/ --resolution 0.25
   gecko validate examples/*.toml
 """
+
+
+def _resolution_arg(text: str) -> float:
+    """--resolution and GECKO_RESOLUTION: a number in (0, 100]."""
+    try:
+        v = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
+    if not 0 < v <= 100:  # also refuses nan
+        raise argparse.ArgumentTypeError(f"{text!r} is out of range: need a number in (0, 100]")
+    return v
+
+
+def _threads_arg(text: str) -> int:
+    try:
+        v = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not an integer") from None
+    if not 1 <= v <= 4096:
+        raise argparse.ArgumentTypeError(f"{text!r} is out of range: need an integer in [1, 4096]")
+    return v
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -70,11 +116,12 @@ def _parser() -> argparse.ArgumentParser:
         sp.add_argument("--out", "-o", metavar="DIR", required=out_required,
                         help="output folder (created if missing)")
         sp.add_argument("--svg", action="store_true", help="also write SVG figures")
-        sp.add_argument("--resolution", "-r", type=float, metavar="R",
+        sp.add_argument("--resolution", "-r", type=_resolution_arg, metavar="R",
                         help="scale every range's number of points by R (e.g. 0.25 for a quick look); "
                              "default: the scene's own, or $GECKO_RESOLUTION")
         sp.add_argument("--quiet", "-q", action="store_true", help="no progress bar, no summary")
-        sp.add_argument("--threads", type=int, metavar="N", help="threads for batch kernels (default: up to 4)")
+        sp.add_argument("--threads", type=_threads_arg, metavar="N",
+                        help="threads for batch kernels (default: up to 4)")
 
     r = sub.add_parser("run", help="run a scene: compute, write CSV and figures",
                        description="Run SCENE.toml and write its plots (PNG, SVG on request) and CSV files to DIR.")
@@ -89,7 +136,7 @@ def _parser() -> argparse.ArgumentParser:
     pl = sub.add_parser("plan", help="show which kernels a scene would run",
                         description="Validate SCENE.toml and print its plan: the kernels the requested outputs need.")
     pl.add_argument("scene", metavar="SCENE.toml")
-    pl.add_argument("--resolution", "-r", type=float, metavar="R")
+    pl.add_argument("--resolution", "-r", type=_resolution_arg, metavar="R")
 
     f = sub.add_parser("figures", help="render every paper figure",
                        description="Render the paper figures (the scenes of examples/, shipped with gecko) to DIR.")
@@ -105,11 +152,12 @@ def _resolution(args) -> Optional[float]:
     if getattr(args, "resolution", None) is not None:
         return args.resolution
     env = os.environ.get("GECKO_RESOLUTION")
-    if env:
+    if env is not None and env.strip():
         try:
-            return float(env)
-        except ValueError:
-            raise SystemExit(f"gecko: error: GECKO_RESOLUTION={env!r} is not a number")
+            return _resolution_arg(env.strip())
+        except argparse.ArgumentTypeError as exc:  # the same exit status as a bad --resolution
+            from .scene import SceneError
+            raise SceneError(str(exc), source="environment variable GECKO_RESOLUTION") from None
     return None
 
 
@@ -122,6 +170,32 @@ def _progress(args) -> Optional[bool]:
 
 
 def main(argv: Optional[List[str]] = None) -> int:
+    """Run the ``gecko`` command line: ``gecko run``, ``figures``, ``plan``, ``validate``, ``models``.
+
+    Parameters
+    ----------
+    argv : list of str, optional
+        The arguments (default: ``sys.argv[1:]``).
+
+    Returns
+    -------
+    int
+        The exit status: 0 success, 1 a computation failed, 2 bad usage, an invalid scene or a
+        missing optional package (the message names the extra to install), 130 interrupted.
+
+    Examples
+    --------
+    >>> from gecko.cli import main
+    >>> main(["validate", "--help"])  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    SystemExit: 0
+    >>> from gecko.scene import figure_scenes
+    >>> main(["plan", str(figure_scenes()[0])])  # doctest: +ELLIPSIS
+    scene: Two-level seta: critical line of adhesion of the reference design  (resolution 1)
+    ...
+    0
+    """
     os.environ.setdefault("MPLBACKEND", "Agg")  # never open a window
     parser = _parser()
     args = parser.parse_args(argv)
@@ -131,19 +205,21 @@ def main(argv: Optional[List[str]] = None) -> int:
         return 0
     if args.command is None:
         parser.print_help()
-        return 2
+        return EXIT_USAGE
     from .scene import SceneError
     try:
         if args.command == "validate":
             from .scene import validate_scene
             for s in args.scenes:
-                sc = validate_scene(s)
+                sc = validate_scene(s, resolution=_resolution(args))
                 parts = [f"{len(sc.studies)} studies, {sum(len(x.points) for x in sc.studies)} designs, "
                          f"{len(sc.plots)} plots"]
                 if sc.sweep is not None:
                     parts.append(f"a sweep of {sc.sweep.size or 'a table of'} designs")
                 if sc.optimize is not None:
                     parts.append(f"an optimize section ({sc.optimize.table['objective']})")
+                from .scene.limits import estimate
+                parts.append(f"work: {estimate(sc).describe()}")
                 print(f"{s}: ok ({', '.join(parts)})")
             return 0
         if args.command == "plan":
@@ -167,20 +243,26 @@ def main(argv: Optional[List[str]] = None) -> int:
                 bad = [n for n in args.only if n not in by]
                 if bad:
                     _err(f"unknown figure {bad[0]!r}; figures: " + ", ".join(by))
-                    return 2
+                    return EXIT_USAGE
                 scenes = [by[n] for n in args.only]
             if not args.out:
                 _err("figures needs --out DIR")
-                return 2
+                return EXIT_USAGE
             return _run(scenes, args)
     except SceneError as err:
         _err(str(err))
-        return 2
-    except KeyboardInterrupt:
-        _err("interrupted; nothing half-written was left in the output folder (a [sweep] keeps its "
-             "finished chunks there: run the same command again to resume)")
-        return 130
-    return 2
+        return EXIT_USAGE
+    except MissingOptionalDependency as err:  # the message names the extra that installs it
+        _err(str(err))
+        return EXIT_USAGE
+    except KeyboardInterrupt as exc:
+        where = ""
+        if getattr(exc, "folder", None):  # a sweep: how far it got (gecko._sweep_store.SweepInterrupted)
+            where = f" after {exc.done} of {exc.total} sweep designs, which are kept in {exc.folder}"
+        _err(f"interrupted{where}; nothing half-written was left in the output folder (a [sweep] keeps its "
+             "finished work: run the same command again to resume)")
+        return EXIT_INTERRUPTED
+    return EXIT_USAGE
 
 
 def _run(scenes: List[Path], args) -> int:
@@ -195,11 +277,11 @@ def _run(scenes: List[Path], args) -> int:
             res = run_scene(s, args.out, formats=formats, resolution=_resolution(args),
                             progress=_progress(args), cache=cache, threads=args.threads,
                             draw=not getattr(args, "no_figures", False))
-        except SceneError:
+        except (SceneError, MissingOptionalDependency):
             raise
         except Exception as exc:  # a kernel failure: say which scene, exit 1
             _err(f"{s}: {type(exc).__name__}: {exc}")
-            return 1
+            return EXIT_FAILED
         n_files += len(res.files)
         if not args.quiet:
             name = s.stem if args.command == "figures" else s

@@ -8,7 +8,7 @@ designs: the nine design fields, the outputs asked for, and ``status``::
     designs = gecko.sobol_designs({"EI1": (1, 10), "alpha2": (0, 0.5)}, n=4096, seed=1)
     table = gecko.sweep(designs, outputs=["fn0", "slope_k", "max_pull_off"], out="runs/")
 
-Only what the outputs need is solved (models.md §1, gecko/seta/characteristics.hpp):
+Only what the outputs need is solved (docs/theory/two_level_seta.md, gecko/seta/characteristics.hpp):
 
 * ``ft_max`` and the ``small_*`` quantities are closed forms: no solver runs;
 * ``fn0``, ``slope_k``, ``sticky_at_rest`` need the natural state at Ft = 0 (one homotopy solve
@@ -32,6 +32,12 @@ is bitwise the same for any chunk size, thread count and executor. With ``out=DI
 written to ``DIR/sweep-<key>/chunk-NNNNNN.parquet`` as soon as it is done (``<key>``: a hash of the
 designs, the outputs, the chunk size and the gecko version) and the finished table to
 ``DIR/sweep-<key>.parquet``; a run that was interrupted resumes from the chunks already written.
+Every file carries ``FILE.manifest.json`` (its sha256 and the hash of its designs, outputs and the
+gecko version) and is verified before reuse; a file that fails (edited, copied over another,
+truncated, unreadable) is computed again with a ``gecko._integrity.ResultFileWarning``. One
+process at a time writes a sweep (``DIR/sweep-<key>.lock``; a second one gets
+``gecko._locking.FolderLocked``). Ctrl-C keeps the finished blocks of the current chunk and raises
+KeyboardInterrupt saying where the run stopped.
 
 Status codes (``status``, as ``gecko.STATUS``): 0 solved; 1 natural state not found; 3 the
 natural state is outside the model's forms; 5 invalid design (only with ``errors="nan"``; the
@@ -59,13 +65,11 @@ written where ``sweep`` runs, so the workers need no shared disk. An address whe
 answers raises ConnectionError after ``connect_timeout`` seconds.
 
 pandas (and pyarrow for ``out=``, dask.distributed for clusters) are optional dependencies:
-``pip install gecko[sweep]``.
+``pip install "gecko-adhesion[sweep]"`` (a Dask cluster: ``pip install "gecko-adhesion[dask]"``).
 """
 from __future__ import annotations
 
 import hashlib
-import inspect
-import itertools
 import math
 import os
 import time
@@ -75,14 +79,18 @@ import numpy as np
 
 from . import _core
 from . import seta as _seta
+# sampling and bounds live in gecko.designs; the old names stay importable from here
+from .designs import (DEFAULTS, FIELDS, _DOMAIN, _EXTRA, _check_fields, _count, _fixed, _need,  # noqa: F401
+                      _qmc, _scale, _table, design_grid, design_matrix, latin_hypercube_designs,
+                      parse_bounds, random_designs, sobol_designs)
+from .designs import parse_bounds as _parse_bounds  # noqa: F401  (the old private name)
+from ._sweep_store import SweepInterrupted as _SweepInterrupted
+from ._vectorize import check_table as _check_table
+from ._sweep_store import SweepStore as _SweepStore
+from ._sweep_store import compute_resumable as _compute_resumable
 
 __all__ = ["sweep", "SWEEP_OUTPUTS", "DEFAULT_SWEEP_OUTPUTS", "design_grid", "random_designs",
            "sobol_designs", "latin_hypercube_designs"]
-
-#: the design fields, in the order of the compiled kernels
-FIELDS = _seta.TwoLevelSeta._FIELDS
-#: the reference scene (models.md §1, TwoLevelSeta's defaults): every field a table leaves out
-DEFAULTS = {f: float(inspect.signature(_seta.TwoLevelSeta).parameters[f].default) for f in FIELDS}
 
 #: output -> solver depth it needs (0: closed forms, 1: natural state at Ft = 0, 2: the line)
 SWEEP_OUTPUTS: Dict[str, int] = {
@@ -101,189 +109,6 @@ _BOOL = ("sticky_at_rest", "small_non_sticky", "admissible_to_end", "max_pull_of
 #: same table as ``TwoLevelSeta.characteristics().end``)
 LINE_END = _seta._LINE_END
 
-# allowed range of each field, for bounds: (lower, upper, lower inclusive, text)
-_DOMAIN = {
-    "EI1": (0.0, math.inf, False, "0 < EI1 < inf"), "EI2": (0.0, math.inf, False, "0 < EI2 < inf"),
-    "EA1": (0.0, math.inf, False, "0 < EA1 < inf (inf: inextensible, fix it instead of sampling)"),
-    "EA2": (0.0, math.inf, False, "0 < EA2 < inf (inf: inextensible, fix it instead of sampling)"),
-    "l1": (0.0, math.inf, False, "0 < l1 < inf"), "l2": (0.0, math.inf, False, "0 < l2 < inf"),
-    "alpha1": (0.0, math.pi / 2, False, "0 < alpha1 < pi/2"),
-    "alpha2": (0.0, math.pi / 2, True, "0 <= alpha2 < pi/2"),
-    "w": (0.0, math.inf, False, "0 < w < inf"),
-}
-
-_EXTRA = "pip install gecko[sweep]"
-
-
-def _need(module: str, what: str):
-    import importlib
-    try:
-        return importlib.import_module(module)
-    except ImportError as exc:
-        raise ImportError(f"{what} needs the optional package {module.split('.')[0]!r} "
-                          f"({_EXTRA} installs pandas, pyarrow, dask[distributed] and scipy): {exc}") from None
-
-
-# ---- designs --------------------------------------------------------------------------------------
-
-def _check_fields(names: Iterable[str], what: str) -> None:
-    for n in names:
-        if n not in DEFAULTS:
-            raise ValueError(f"{what}: unknown design parameter {n!r}; allowed: " + ", ".join(FIELDS))
-
-
-def _fixed(fixed: Optional[Mapping[str, float]]) -> Dict[str, float]:
-    fixed = dict(fixed or {})
-    _check_fields(fixed, "fixed")
-    return fixed
-
-
-def _parse_bounds(bounds: Mapping[str, Any]) -> List[Tuple[str, float, float, bool]]:
-    """(name, lower, upper, log) per bound; ValueError naming the parameter and its allowed range."""
-    if not isinstance(bounds, Mapping) or not bounds:
-        raise ValueError("bounds: need a non-empty mapping {name: (lower, upper)} or "
-                         "{name: (lower, upper, 'log')}; names: " + ", ".join(FIELDS))
-    out = []
-    for name, b in bounds.items():
-        _check_fields([name], "bounds")
-        lo_d, hi_d, lo_incl, text = _DOMAIN[name]
-        log = False
-        if isinstance(b, (list, tuple)) and len(b) == 3 and b[2] in ("log", "linear"):
-            log = b[2] == "log"
-            b = b[:2]
-        if not (isinstance(b, (list, tuple)) and len(b) == 2):
-            raise ValueError(f"bounds for {name}: need (lower, upper) or (lower, upper, 'log'); got {b!r}")
-        try:
-            lo, hi = float(b[0]), float(b[1])
-        except (TypeError, ValueError):
-            raise ValueError(f"bounds for {name}: need two numbers; got {b!r}") from None
-        if not (lo < hi):
-            raise ValueError(f"bounds for {name} = ({lo:g}, {hi:g}) are out of range: need lower < upper, "
-                             f"both within {text}")
-        ok_lo = lo >= lo_d if lo_incl else lo > lo_d
-        if not (ok_lo and hi < hi_d and math.isfinite(lo) and math.isfinite(hi)):
-            raise ValueError(f"bounds for {name} = ({lo:g}, {hi:g}) are out of range: need {text}")
-        if log and not lo > 0:
-            raise ValueError(f"bounds for {name} = ({lo:g}, {hi:g}, 'log') are out of range: a log scale "
-                             "needs lower > 0")
-        out.append((name, lo, hi, log))
-    return out
-
-
-def _table(columns: Dict[str, np.ndarray], n: int, fixed: Dict[str, float]):
-    pd = _need("pandas", "gecko design tables")
-    data = {}
-    for f in FIELDS:
-        if f in columns:
-            data[f] = np.asarray(columns[f], dtype=np.float64)
-        else:
-            data[f] = np.full(n, float(fixed.get(f, DEFAULTS[f])))
-    return pd.DataFrame(data)
-
-
-def _scale(unit: np.ndarray, parsed) -> Dict[str, np.ndarray]:
-    cols = {}
-    for j, (name, lo, hi, log) in enumerate(parsed):
-        u = unit[:, j]
-        cols[name] = np.exp(np.log(lo) + u * (np.log(hi) - np.log(lo))) if log else lo + u * (hi - lo)
-    return cols
-
-
-def _count(n, what="n") -> int:
-    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
-        raise ValueError(f"{what} = {n!r} is out of range: need an integer >= 1")
-    return int(n)
-
-
-def design_grid(axes: Mapping[str, Sequence[float]], *, fixed: Optional[Mapping[str, float]] = None):
-    """Every combination of the values in ``axes`` ({name: values}); the first name varies slowest.
-    The other fields take ``fixed`` or the reference scene's values. Returns a DataFrame."""
-    if not isinstance(axes, Mapping) or not axes:
-        raise ValueError("axes: need a non-empty mapping {name: [values]}; names: " + ", ".join(FIELDS))
-    _check_fields(axes, "axes")
-    vals = []
-    for name, v in axes.items():
-        a = np.atleast_1d(np.asarray(v, dtype=np.float64))
-        if a.ndim != 1 or a.size == 0:
-            raise ValueError(f"axes[{name!r}]: need a non-empty 1-D list of values")
-        vals.append(a)
-    combos = np.array(list(itertools.product(*vals)), dtype=np.float64).reshape(-1, len(vals))
-    return _table({n: combos[:, j] for j, n in enumerate(axes)}, combos.shape[0], _fixed(fixed))
-
-
-def random_designs(bounds: Mapping[str, Any], n: int, *, seed: Optional[int] = None,
-                   fixed: Optional[Mapping[str, float]] = None):
-    """``n`` designs drawn independently and uniformly within ``bounds`` ({name: (lower, upper)} or
-    (lower, upper, "log") for log-uniform) by numpy's default generator seeded with ``seed``."""
-    parsed = _parse_bounds(bounds)
-    n = _count(n)
-    unit = np.random.default_rng(seed).random((n, len(parsed)))
-    return _table(_scale(unit, parsed), n, _fixed(fixed))
-
-
-def _qmc(kind: str, d: int, seed, **kw):
-    qmc = _need("scipy.stats.qmc", "Sobol and Latin-hypercube designs")
-    cls = {"sobol": qmc.Sobol, "lhs": qmc.LatinHypercube}[kind]
-    try:
-        return cls(d, rng=np.random.default_rng(seed), **kw)
-    except TypeError:  # scipy < 1.15 names it seed
-        return cls(d, seed=np.random.default_rng(seed), **kw)
-
-
-def sobol_designs(bounds: Mapping[str, Any], n: int, *, seed: Optional[int] = None, scramble: bool = True,
-                  fixed: Optional[Mapping[str, float]] = None):
-    """``n`` designs from a (scrambled) Sobol sequence over ``bounds`` (scipy.stats.qmc); a power of
-    two for ``n`` keeps the sequence's balance."""
-    parsed = _parse_bounds(bounds)
-    n = _count(n)
-    eng = _qmc("sobol", len(parsed), seed, scramble=scramble)
-    import warnings
-    with warnings.catch_warnings():
-        warnings.filterwarnings("ignore", message=".*balance properties.*")
-        unit = eng.random(n)
-    return _table(_scale(unit, parsed), n, _fixed(fixed))
-
-
-def latin_hypercube_designs(bounds: Mapping[str, Any], n: int, *, seed: Optional[int] = None,
-                            fixed: Optional[Mapping[str, float]] = None):
-    """``n`` designs of a Latin hypercube over ``bounds`` (scipy.stats.qmc.LatinHypercube): each
-    parameter's range is cut into n equal strata, one design in each."""
-    parsed = _parse_bounds(bounds)
-    n = _count(n)
-    unit = _qmc("lhs", len(parsed), seed).random(n)
-    return _table(_scale(unit, parsed), n, _fixed(fixed))
-
-
-def design_matrix(designs) -> np.ndarray:
-    """The designs as a C-contiguous (n, 9) float64 array in the order of ``FIELDS``.
-
-    Accepts a DataFrame or a mapping of columns (a subset of the fields; the others take the
-    reference scene's values), an array of shape (n, 9), or a sequence of ``TwoLevelSeta``."""
-    from .seta import TwoLevelSeta
-    if isinstance(designs, TwoLevelSeta):
-        designs = [designs]
-    if hasattr(designs, "columns") and hasattr(designs, "to_numpy"):  # a DataFrame
-        designs = {str(c): designs[c].to_numpy() for c in designs.columns}
-    if isinstance(designs, Mapping):
-        _check_fields(designs, "designs")
-        if not designs:
-            raise ValueError("designs: an empty table; need at least one of the columns " + ", ".join(FIELDS))
-        cols = {k: np.asarray(v, dtype=np.float64).reshape(-1) for k, v in designs.items()}
-        sizes = {v.size for v in cols.values()}
-        if len(sizes) != 1:
-            raise ValueError("designs: the columns have different lengths: "
-                             + ", ".join(f"{k}: {v.size}" for k, v in cols.items()))
-        n = sizes.pop()
-        return np.ascontiguousarray(np.column_stack([cols.get(f, np.full(n, DEFAULTS[f])) for f in FIELDS]))
-    if isinstance(designs, (list, tuple)) and designs and isinstance(designs[0], TwoLevelSeta):
-        return np.ascontiguousarray(np.stack([d._params() for d in designs]))
-    a = np.asarray(designs, dtype=np.float64)
-    if a.ndim != 2 or a.shape[1] != 9:
-        raise ValueError(f"designs: need a table (DataFrame or {{name: column}}), TwoLevelSeta objects or an "
-                         f"array of shape (n, 9) in the order {', '.join(FIELDS)}; got shape {a.shape}")
-    return np.ascontiguousarray(a)
-
-
 # ---- computing one chunk --------------------------------------------------------------------------
 
 def _depth(outputs: Sequence[str]) -> int:
@@ -292,9 +117,13 @@ def _depth(outputs: Sequence[str]) -> int:
 
 # line_end codes where the continuation gave up before the line's end (no convergence at a
 # singular point, point budget, stalled): the minimum over the followed part is only a bound
-_GIVEN_UP = (3, 5, 7)
+_GIVEN_UP = (_seta.LineEnd.no_convergence, _seta.LineEnd.max_points, _seta.LineEnd.stalled)
 # outputs that claim something of the whole line: NaN (and status 6) when it was given up
 _WHOLE_LINE = ("max_pull_off", "ft_at_max_pull_off", "min_fn")
+
+
+#: designs per thread in one compiled call within a chunk (Ctrl-C keeps the blocks finished)
+_BLOCK_PER_THREAD = 64
 
 
 def compute_chunk(designs: np.ndarray, outputs: Sequence[str], threads: int = 1) -> Dict[str, np.ndarray]:
@@ -307,8 +136,9 @@ def compute_chunk(designs: np.ndarray, outputs: Sequence[str], threads: int = 1)
     given_up = np.zeros(status.shape, dtype=bool)
     if depth == 2:
         # given up before the line's end, or its minimum not established (NaN from the kernel)
-        given_up = (status == 0) & (np.isin(np.asarray(d["line_end"]), _GIVEN_UP) | np.isnan(d["min_fn"]))
-        status[given_up] = 6
+        given_up = (status == _seta.CriticalStatus.converged) & (np.isin(np.asarray(d["line_end"]), _GIVEN_UP)
+                                                                 | np.isnan(d["min_fn"]))
+        status[given_up] = _seta.CriticalStatus.not_reached
     out = {"status": status}
     for o in outputs:
         a = np.asarray(d[_SOURCE.get(o, o)])
@@ -317,7 +147,7 @@ def compute_chunk(designs: np.ndarray, outputs: Sequence[str], threads: int = 1)
         if o in _BOOL:
             a = a.astype(bool)
         elif o == "line_end":  # -1: not computed (invalid design)
-            a = np.where(status == 5, -1, a).astype(np.int8)
+            a = np.where(status == _seta.CriticalStatus.invalid_input, -1, a).astype(np.int8)
         out[o] = a
     return out
 
@@ -348,7 +178,7 @@ class _ProgressAdapter:
         self.callback = progress if callable(progress) else None
         self.bar = None
         if self.callback is None and progress is not False:
-            from .scene.runner import Progress
+            from .progress import Progress
             self.bar = Progress(total, "sweep", enabled=True if progress is True else None)
         self.total, self.done = total, 0
 
@@ -382,7 +212,7 @@ def _validate_rows(matrix: np.ndarray) -> None:
     """errors="raise": refuse the sweep before computing when a design is invalid, naming its row
     and (through the compiled validator) the parameter and its allowed range."""
     st = np.asarray(_core.seta_characteristics_batch(matrix.reshape(-1), 0, 1)["status"])
-    bad = np.flatnonzero(st == 5)
+    bad = np.flatnonzero(st == _seta.CriticalStatus.invalid_input)
     if bad.size:
         i = int(bad[0])
         try:
@@ -407,8 +237,14 @@ def _connect(executor: Optional[str], client, timeout: float):
                          "(a dask.distributed scheduler)")
     distributed = _need("distributed", "running a sweep on a Dask cluster")
     addr = "tcp://" + executor[len("dask://"):] if executor.startswith("dask://") else executor
+    from ._dask_probe import client_within, probe
+    deadline = time.monotonic() + timeout  # one deadline for the probe and the client
     try:
-        return distributed.Client(addr, timeout=timeout, set_as_default=False), True
+        probe(addr, deadline)  # a bounded handshake of our own first: see gecko._dask_probe
+        return client_within(lambda: distributed.Client(addr, timeout=max(deadline - time.monotonic(), 0.1),
+                                                        set_as_default=False), deadline), True
+    except ValueError as exc:
+        raise ValueError(f"executor = {executor!r} is not allowed: need 'dask://host:port' ({exc})") from None
     except (OSError, TimeoutError) as exc:
         raise ConnectionError(f"executor = {executor!r}: no Dask scheduler answered at {addr} within "
                               f"{timeout:g} s ({type(exc).__name__}: {exc}). Start one with `dask scheduler` "
@@ -419,25 +255,65 @@ def sweep(designs, outputs: Optional[Sequence[str]] = None, *, out: Optional[Uni
           chunk_size: int = 10000, threads: Optional[int] = None, client=None, executor: Optional[str] = None,
           connect_timeout: float = 10.0, errors: str = "raise",
           progress: Union[None, bool, Callable[[int, int], None]] = None):
-    """Characteristics of many designs: a pandas DataFrame with one row per design, in order.
+    """Characteristic quantities of many seta designs: one pandas table, one row per design, in order.
 
-    ``designs``: a table (DataFrame or {name: column}; missing fields take the reference scene's
-    values), an (n, 9) array or TwoLevelSeta objects; see ``design_grid``, ``random_designs``,
-    ``sobol_designs``, ``latin_hypercube_designs``. ``outputs``: names from ``SWEEP_OUTPUTS``
-    (default ``DEFAULT_SWEEP_OUTPUTS``); only what they need is solved. ``status`` is always there.
+    Only what the requested outputs need is solved (``SWEEP_OUTPUTS`` gives each output's depth:
+    closed forms, the natural state, or the whole line). The table is bitwise the same for any chunk
+    size, thread count and executor. Needs the ``[sweep]`` extra; a Dask cluster needs ``[dask]``.
 
-    ``out``: a folder; chunks go to ``out/sweep-<key>/`` as they finish and the table to
-    ``out/sweep-<key>.parquet`` (pyarrow); an interrupted run with the same designs, outputs and
-    ``chunk_size`` resumes from the chunks written. ``threads``: C++ threads per chunk (default:
-    the CPU count). ``client``: a ``dask.distributed.Client``, or ``executor="dask://host:port"``
-    (connecting waits at most ``connect_timeout`` seconds, then raises ConnectionError): chunks
-    then run as Dask tasks (one thread each unless ``threads`` is given) and stream back.
-    ``errors="raise"`` refuses a sweep with an invalid design (ValueError naming the row and
-    parameter) before computing; ``errors="nan"`` keeps it as a row with status 5.
-    ``progress``: None (a bar on a terminal), False, True, or a callable(done, total) called with
-    the number of designs done: once at the start (the designs already on disk) and after each chunk.
+    Parameters
+    ----------
+    designs : pandas.DataFrame, mapping, array_like of shape (n, 9), or sequence of TwoLevelSeta
+        The designs; a table's missing fields take the reference scene's values. See
+        :func:`design_grid`, :func:`random_designs`, :func:`sobol_designs`,
+        :func:`latin_hypercube_designs`.
+    outputs : sequence of str, optional
+        Names from ``SWEEP_OUTPUTS`` (default ``DEFAULT_SWEEP_OUTPUTS``); ``status`` is always there.
+    out : str or os.PathLike, optional
+        A folder: chunks go to ``out/sweep-<key>/`` as they finish, the table to
+        ``out/sweep-<key>.parquet``; the same call after an interruption computes only what is missing.
+    chunk_size : int, optional
+        Designs per chunk (default 10000).
+    threads : int, optional
+        C++ threads per chunk (default: the CPU count; one per Dask task unless given).
+    client : dask.distributed.Client, optional
+        Run the chunks as Dask tasks on this client.
+    executor : str, optional
+        ``"threads"`` (default) or ``"dask://host:port"`` to connect to a scheduler.
+    connect_timeout : float, optional
+        Seconds to wait for the scheduler before ``ConnectionError`` (default 10).
+    errors : {"raise", "nan"}, optional
+        Refuse a sweep with an invalid design before computing (default), or keep it as a row with
+        status 5.
+    progress : None, bool or callable, optional
+        None: a bar on a terminal; True/False; or a callable(done, total), called with the number
+        of designs done once at the start (the designs already on disk) and after each chunk.
 
-    ``table.attrs["sweep"]``: key, path, chunks computed and reused, seconds.
+    Returns
+    -------
+    pandas.DataFrame
+        The design fields, the outputs and ``status``; ``table.attrs["sweep"]`` holds the key, path,
+        chunks computed and reused, and the time taken.
+
+    Raises
+    ------
+    ValueError
+        If a design, an output name or an argument is invalid (naming the row and the parameter).
+    ConnectionError
+        If no Dask scheduler answers at ``executor``.
+    gecko._optional.MissingOptionalDependency
+        If pandas (or pyarrow for ``out``, distributed for a cluster) is not installed; the message
+        names the extra that installs it.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> designs = gecko.design_grid({"alpha2": [0.3, 0.5]})
+    >>> table = gecko.sweep(designs, outputs=["fn0", "max_pull_off"], progress=False)
+    >>> table[["alpha2", "fn0", "max_pull_off", "status"]].round(4)
+       alpha2     fn0  max_pull_off  status
+    0     0.3  2.3606        0.0000       0
+    1     0.5  0.4935        2.4502       0
     """
     pd = _need("pandas", "gecko.sweep")
     t0 = time.perf_counter()
@@ -450,6 +326,7 @@ def sweep(designs, outputs: Optional[Sequence[str]] = None, *, out: Optional[Uni
         raise ValueError(f"threads = {threads!r} is out of range: need an integer >= 1")
     if isinstance(connect_timeout, bool) or not isinstance(connect_timeout, (int, float)) or not connect_timeout > 0:
         raise ValueError(f"connect_timeout = {connect_timeout!r} is out of range: need seconds > 0")
+    _check_table(designs)  # no silent conversion of complex, text, dates, None (gecko._vectorize)
     matrix = design_matrix(designs)
     n = matrix.shape[0]
     if n == 0:
@@ -464,21 +341,21 @@ def sweep(designs, outputs: Optional[Sequence[str]] = None, *, out: Optional[Uni
     pq = _need("pyarrow.parquet", "gecko.sweep(out=...) (Parquet files)") if out is not None else None
     dask_client, owned = _connect(executor, client, connect_timeout)  # fails fast, before any file
     bar = None
+    store = None
     try:
-        store = None
         final_path = None
         if out is not None:
-            store = _ChunkStore(os.fspath(out), key, pq)
+            store = _SweepStore(os.fspath(out), key, pq, _version(), matrix, outputs, chunk_size)
             final_path = store.final
-            if os.path.exists(final_path):  # the whole sweep is already there
-                table = pd.read_parquet(final_path)
-                if len(table) == n:
-                    table.attrs["sweep"] = {"key": key, "path": final_path, "chunks": len(starts),
-                                            "chunks_computed": 0, "chunks_reused": len(starts),
-                                            "seconds": time.perf_counter() - t0, "executor": "file"}
-                    return table
+            cached = store.load_final(n, FIELDS)  # verified: hash, inputs key, content
+            if cached is not None:  # the whole sweep is already there
+                table = pd.DataFrame({c: cached[c] for c in list(FIELDS) + outputs + ["status"]})
+                table.attrs["sweep"] = {"key": key, "path": final_path, "chunks": len(starts),
+                                        "chunks_computed": 0, "chunks_reused": len(starts),
+                                        "seconds": time.perf_counter() - t0, "executor": "file"}
+                return table
             for i in range(len(starts)):
-                parts[i] = store.load(i, min(chunk_size, n - starts[i]), outputs)
+                parts[i] = store.load(i)
         reused = sum(p is not None for p in parts)
         todo = [i for i, p in enumerate(parts) if p is None]
         bar = _ProgressAdapter(progress, n)
@@ -492,8 +369,11 @@ def sweep(designs, outputs: Optional[Sequence[str]] = None, *, out: Optional[Uni
 
         if dask_client is None:
             nt = int(threads) if threads is not None else (os.cpu_count() or 1)
+            # depth >= 1: smaller blocks, so that Ctrl-C keeps what finished
+            step = chunk_size if _depth(outputs) == 0 else _BLOCK_PER_THREAD * nt
             for i in todo:
-                done(i, compute_chunk(matrix[starts[i]:starts[i] + chunk_size], outputs, nt))
+                done(i, _compute_resumable(store, i, matrix[starts[i]:starts[i] + chunk_size], outputs, nt,
+                                           compute_chunk, step))
             how = f"threads ({nt})"
         else:
             from distributed import as_completed
@@ -507,61 +387,27 @@ def sweep(designs, outputs: Optional[Sequence[str]] = None, *, out: Optional[Uni
                 if futures:
                     dask_client.cancel(list(futures))
             how = f"dask ({dask_client.scheduler.address})"
+        cols = {f: matrix[:, j] for j, f in enumerate(FIELDS)}
+        for c in outputs + ["status"]:
+            cols[c] = np.concatenate([p[c] for p in parts])
+        table = pd.DataFrame(cols)
+        if store is not None:
+            store.finish(table)
+    except KeyboardInterrupt:
+        finished = sum(p["status"].size for p in parts if p is not None) + (store.partial_rows if store else 0)
+        where = (f"; the finished work is kept in {store.dir}: run the same sweep (designs, outputs, chunk_size, "
+                 "out=) again to resume" if store is not None else " (nothing kept: pass out=DIR to resume "
+                 "an interrupted sweep)")
+        raise _SweepInterrupted(f"sweep interrupted after {finished} of {n} designs (chunks of {chunk_size})"
+                                + where, finished, n, store.dir if store is not None else None) from None
     finally:
         if bar is not None:
             bar.close()
         if owned:
             dask_client.close()
+        if store is not None:
+            store.close()
 
-    cols = {f: matrix[:, j] for j, f in enumerate(FIELDS)}
-    for c in outputs + ["status"]:
-        cols[c] = np.concatenate([p[c] for p in parts])
-    table = pd.DataFrame(cols)
-    if store is not None:
-        store.finish(table)
     table.attrs["sweep"] = {"key": key, "path": final_path, "chunks": len(starts), "chunks_computed": len(todo),
                             "chunks_reused": reused, "seconds": time.perf_counter() - t0, "executor": how}
     return table
-
-
-class _ChunkStore:
-    """Chunk files of one sweep: written atomically (temporary name, then rename), so a chunk file
-    that exists is complete; removed once the whole table is written."""
-
-    def __init__(self, out: str, key: str, pq):
-        self.dir = os.path.join(out, f"sweep-{key}")
-        self.final = os.path.join(out, f"sweep-{key}.parquet")
-        self.pq = pq
-        try:
-            os.makedirs(self.dir, exist_ok=True)
-        except OSError as exc:
-            raise ValueError(f"out = {out!r}: cannot create the folder: {exc.strerror or exc}") from None
-
-    def path(self, i: int) -> str:
-        return os.path.join(self.dir, f"chunk-{i:06d}.parquet")
-
-    def load(self, i: int, rows: int, outputs: Sequence[str]) -> Optional[Dict[str, np.ndarray]]:
-        p = self.path(i)
-        if not os.path.exists(p):
-            return None
-        try:
-            t = self.pq.read_table(p)
-        except Exception:  # unreadable: compute it again
-            return None
-        names = set(t.column_names)
-        if t.num_rows != rows or not set(outputs) | {"status"} <= names:
-            return None
-        return {c: t.column(c).to_numpy() for c in list(outputs) + ["status"]}
-
-    def save(self, i: int, res: Dict[str, np.ndarray]) -> None:
-        import pyarrow as pa
-        tmp = self.path(i) + f".tmp{os.getpid()}"
-        self.pq.write_table(pa.table(res), tmp)
-        os.replace(tmp, self.path(i))
-
-    def finish(self, table) -> None:
-        tmp = self.final + f".tmp{os.getpid()}"
-        table.to_parquet(tmp, index=False)
-        os.replace(tmp, self.final)
-        import shutil
-        shutil.rmtree(self.dir, ignore_errors=True)

@@ -1,7 +1,7 @@
 """gecko.friction — frictional adhesion dynamics of the gecko spatula and seta.
 
 Implements paper 000 (Yamaguchi, Gravish, Autumn, Creton, J. Phys. Chem. B 113, 3622 (2009)) as
-restated in models.md §2, plus two checks beyond it:
+restated in docs/theory/frictional_adhesion.md, plus two checks beyond it:
 
 * curved-beam compliance and rigidity by Castigliano for any centreline ``z(x)``
   (:func:`castigliano_compliance`), and the Appendix-1 parabola in closed form
@@ -30,6 +30,10 @@ import numpy as np
 
 from . import _core
 from ._vectorize import error_code as _error_code, flat_args as _flat_args, shaped as _shaped
+from ._vectorize import check_count as _check_count, real_array as _real_array
+
+#: outcome of a Levenberg-Marquardt fit, an IntEnum bound from C++ (gecko/friction/fit.hpp)
+FitStatus = _core.FitStatus
 
 __all__ = [
     # beam
@@ -41,42 +45,74 @@ __all__ = [
     "viscoelastic_detachment", "eyring_detachment", "ViscoelasticDetachment", "EyringDetachment",
     "detachment_stretch", "resonant_frequency",
     # steady sliding
-    "SlidingModel", "FIG6_VISCOELASTIC", "FIG6_PLASTIC", "steady_sliding", "SteadySliding",
+    "SlidingModel", "FIG6_VISCOELASTIC", "FIG6_PLASTIC", "steady_sliding", "SteadySliding", "FitStatus",
     # beyond the paper
     "simulate_spatulae", "SpatulaSimulation", "fit_steady_sliding", "SteadySlidingFit",
+    "ParametricLaw",
 ]
 
 def _matrix(K, name: str = "K") -> np.ndarray:
-    K = np.asarray(K, dtype=np.float64)
+    K = _real_array(K, name)
     if K.shape != (2, 2):
         raise ValueError(f"{name} must be a 2x2 matrix, got shape {K.shape}")
     return np.ascontiguousarray(K).reshape(-1)
 
 
 def _scalar(x, name: str) -> float:
-    a = np.asarray(x, dtype=np.float64)
+    a = _real_array(x, name)
     if a.shape != ():
         raise ValueError(f"{name} must be a scalar, got shape {a.shape}")
     return float(a)
 
 
-# ---- curved beam (models.md §2, Appendix 1) ------------------------------------------------
+# ---- curved beam (docs/theory/frictional_adhesion.md, Appendix 1) ------------------------------------------------
 
 def castigliano_compliance(z: Callable, dzdx: Optional[Callable] = None, *, L: float = 1.0,
                            EI: float = 1.0, EA: float = np.inf, tol: float = 0.0,
                            max_levels: int = 9, report: bool = False):
-    """Tip compliance C (2x2) of a planar curved beam with centreline ``z(x)``, ``0 <= x <= L``.
+    """Tip compliance C (2x2) of a planar curved beam with centreline ``z(x)``, 0 <= x <= L.
 
-    The tip (loaded by ``(F_par, F_perp)``) is at ``x = 0``, the clamp at ``x = L``; the moment is
-    ``M = -(z - z(0)) F_par - x F_perp`` (paper 000 eq A1.1) and, for finite ``EA``, the axial
-    force ``F_par t_x - F_perp t_z`` adds its energy. ``D = C F``; ``rigidity(C)`` gives K.
+    Castigliano's theorem on the bending energy (paper 000 Appendix 1, eq A1.1:
+    M = -(z - z(0)) F_par - x F_perp), plus the axial energy for a finite ``EA``; D = C F, and
+    :func:`rigidity` gives K = C^-1. The tip is at x = 0, the clamp at x = L. Tanh-sinh quadrature
+    after x = L t^2 copes with a tip where ds/dx ~ x^-1/2.
 
-    ``z`` is a Python callable of one float. The slope comes from ``dzdx`` if given, else by the
-    complex step ``Im z(x + i h) / h`` (exact to rounding; needs ``z`` to accept complex numbers,
-    e.g. written with numpy functions). Tanh-sinh quadrature after ``x = L t**2`` copes with a
-    tip where ``ds/dx ~ x**-1/2``; ``tol`` (0: eps**(2/3)) is the step between two quadrature
-    levels, the result is then accurate to a few eps. With ``report=True`` returns
-    ``(C, info)`` with the error estimate, levels and evaluations.
+    Parameters
+    ----------
+    z : callable
+        The centreline, a Python function of one float.
+    dzdx : callable, optional
+        Its slope; default the complex step Im z(x + ih)/h (exact to rounding; ``z`` must then
+        accept complex numbers, e.g. be written with numpy functions).
+    L : float, optional
+        Horizontal extent (default 1).
+    EI : float, optional
+        Bending stiffness (default 1).
+    EA : float, optional
+        Axial stiffness (default inf: bending only).
+    tol : float, optional
+        Step between two quadrature levels that ends the refinement (0: eps^(2/3)); the result is
+        then accurate to a few eps.
+    max_levels : int, optional
+        Maximum number of tanh-sinh levels (default 9).
+    report : bool, optional
+        Also return a dict with the error estimate, levels and evaluations.
+
+    Returns
+    -------
+    numpy.ndarray of shape (2, 2), or (numpy.ndarray, dict) with ``report=True``
+
+    Raises
+    ------
+    ValueError
+        If L, EI or EA is out of range, or the energy integrals are not finite.
+
+    Examples
+    --------
+    >>> import numpy as np, gecko
+    >>> C = gecko.castigliano_compliance(lambda x: np.sqrt(x) / 2, L=1.0)
+    >>> np.allclose(C, gecko.parabolic_beam_compliance(1.0, 1.0), rtol=1e-13)
+    True
     """
     C, info = _core.castigliano_compliance(z, dzdx, _scalar(L, "L"), _scalar(EI, "EI"),
                                            _scalar(EA, "EA"), float(tol), int(max_levels))
@@ -90,21 +126,106 @@ def _parabolic(L, EI, errors, rigid):
 
 
 def parabolic_beam_compliance(L=1.0, EI=1.0, *, errors: str = "raise"):
-    """Closed-form compliance of the parabola z = sqrt(L x)/2 (Appendix 1, a11 sign corrected).
+    """Closed-form compliance of the parabolic beam z = sqrt(L x)/2 (paper 000 eq A1.5).
 
-    ``C = (L**3 / 2 EI) [[a11, a12], [a12, a22]]``; broadcasts over L and EI, shape (..., 2, 2).
+    C = (L^3 / 2 EI) [[a11, a12], [a12, a22]], with the sign of a11 corrected
+    (docs/theory/frictional_adhesion.md). Broadcasts over ``L`` and ``EI``.
+
+    Parameters
+    ----------
+    L : array_like, optional
+        Length along x (default 1), > 0.
+    EI : array_like, optional
+        Bending stiffness (default 1), > 0.
+    errors : {"raise", "nan"}, optional
+        Out-of-range input raises ``ValueError`` (default) or gives NaN for that element.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (..., 2, 2).
+
+    Raises
+    ------
+    ValueError
+        If an argument is out of range with ``errors="raise"``; the message names it and the
+        allowed range.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> gecko.parabolic_beam_compliance(1.0, 1.0).round(6)
+    array([[0.132362, 0.210044],
+           [0.210044, 0.348521]])
     """
     return _parabolic(L, EI, errors, False)
 
 
 def parabolic_beam_rigidity(L=1.0, EI=1.0, *, errors: str = "raise"):
-    """K = C**-1 of the parabolic beam; normalised so K[0,0] = 5 it is [[5, -3.013], [-3.013, 1.899]]."""
+    """Rigidity K = C^-1 of the parabolic beam (paper 000 Appendix 1, eqs 2 and 12).
+
+    Normalised to K[0, 0] = 5 it is [[5, -3.0134], [-3.0134, 1.8989]], which the paper rounds to
+    [[5, -3], [-3, 2]].
+
+    Parameters
+    ----------
+    L : array_like, optional
+        Length along x (default 1), > 0.
+    EI : array_like, optional
+        Bending stiffness (default 1), > 0.
+    errors : {"raise", "nan"}, optional
+        Out-of-range input raises ``ValueError`` (default) or gives NaN for that element.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (..., 2, 2).
+
+    Raises
+    ------
+    ValueError
+        If an argument is out of range with ``errors="raise"``; the message names it and the
+        allowed range.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> K = gecko.parabolic_beam_rigidity()
+    >>> (5 * K / K[0, 0]).round(4)
+    array([[ 5.    , -3.0134],
+           [-3.0134,  1.8989]])
+    """
     return _parabolic(L, EI, errors, True)
 
 
 def rigidity(C, *, errors: str = "raise"):
-    """K = C**-1 of symmetric positive definite 2x2 compliances C (shape (..., 2, 2))."""
-    C = np.asarray(C, dtype=np.float64)
+    """Rigidity K = C^-1 of symmetric positive definite 2x2 compliances.
+
+    Parameters
+    ----------
+    C : array_like
+        Compliances, shape (..., 2, 2).
+    errors : {"raise", "nan"}, optional
+        Out-of-range input raises ``ValueError`` (default) or gives NaN for that element.
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (..., 2, 2).
+
+    Raises
+    ------
+    ValueError
+        If ``C`` is not of shape (..., 2, 2), or not symmetric positive definite.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> gecko.rigidity([[2.0, 1.0], [1.0, 1.0]])
+    array([[ 1., -1.],
+           [-1.,  2.]])
+    """
+    C = _real_array(C, "C")
     if C.shape[-2:] != (2, 2):
         raise ValueError(f"C must have shape (..., 2, 2), got {C.shape}")
     out = _core.rigidity(np.ascontiguousarray(C).reshape(-1), _error_code(errors))
@@ -114,7 +235,23 @@ def rigidity(C, *, errors: str = "raise"):
 # ---- paths and force traces (eqs 1-3, 11-13; Figs 4 and 8) -------------------------------
 
 class DisplacementPath(NamedTuple):
-    """Vertices of a piecewise-linear path: at time ``t[i]`` the tip is at ``(d_par[i], d_perp[i])``."""
+    """Vertices of a piecewise-linear displacement path for :func:`force_trace`.
+
+    At time ``t[i]`` the tip is at ``(d_par[i], d_perp[i])``; between vertices it moves linearly.
+
+    Attributes
+    ----------
+    t : tuple of float
+        Strictly increasing times.
+    d_par, d_perp : tuple of float
+        Lateral and normal displacements at those times.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> gecko.FIG4_SPATULA_PATH.d_perp               # press in, then drag at fixed depth
+    (0.0, 1.0, 1.0)
+    """
 
     t: tuple
     d_par: tuple
@@ -128,12 +265,42 @@ FIG8_SETA_PATH = DisplacementPath((0.0, 1.0, 2.0, 3.0), (0.0, 4.0, 6.0, 0.0), (0
 
 
 def paper_rigidity() -> np.ndarray:
-    """The paper's illustrative rigidity [[5, -3], [-3, 2]] (eqs 2 and 12)."""
+    """The paper's illustrative rigidity [[5, -3], [-3, 2]] (paper 000 eqs 2 and 12).
+
+    Returns
+    -------
+    numpy.ndarray
+        A new (2, 2) array.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> gecko.paper_rigidity()
+    array([[ 5., -3.],
+           [-3.,  2.]])
+    """
     return np.array([[5.0, -3.0], [-3.0, 2.0]])
 
 
 class ForceTrace(NamedTuple):
-    """A force trace, arrays ready to plot: time, displacement and force components."""
+    """A force trace from :func:`force_trace`, arrays ready to plot.
+
+    Attributes
+    ----------
+    t : numpy.ndarray
+        Sample times.
+    d_par, d_perp : numpy.ndarray
+        Displacements of the tip.
+    f_par, f_perp : numpy.ndarray
+        Forces f = K d (f_perp < 0: tensile).
+
+    Examples
+    --------
+    >>> import gecko
+    >>> tr = gecko.force_trace()
+    >>> float(tr.f_perp.max()), float(tr.f_perp.min())   # compressive, then tensile
+    (2.0, -7.0)
+    """
 
     t: np.ndarray
     d_par: np.ndarray
@@ -144,16 +311,41 @@ class ForceTrace(NamedTuple):
 
 def force_trace(K=None, path=FIG4_SPATULA_PATH, *, times=None, samples_per_segment: int = 50
                 ) -> ForceTrace:
-    """``f(t) = K d(t)`` along a piecewise-linear path (default: Fig 4 with the paper's K).
+    """Forces f(t) = K d(t) along a piecewise-linear displacement path (paper 000 eqs 1-3, 11-13).
 
-    ``path`` is a :class:`DisplacementPath` or a tuple ``(t, d_par, d_perp)`` with strictly
-    increasing ``t``. Sampled at ``times`` (inside the path) if given, else at
-    ``samples_per_segment`` points per leg plus every vertex exactly.
+    Parameters
+    ----------
+    K : array_like, optional
+        Rigidity (2, 2), symmetric positive definite; default :func:`paper_rigidity`.
+    path : DisplacementPath or (t, d_par, d_perp), optional
+        Vertices of the path, ``t`` strictly increasing; default :data:`FIG4_SPATULA_PATH`
+        (paper 000 Fig 4). :data:`FIG8_SETA_PATH` is Fig 8's.
+    times : array_like, optional
+        Sample times inside the path; default ``samples_per_segment`` points per leg plus every
+        vertex exactly.
+    samples_per_segment : int, optional
+        Default 50.
+
+    Returns
+    -------
+    ForceTrace
+        Arrays ``t, d_par, d_perp, f_par, f_perp``.
+
+    Raises
+    ------
+    ValueError
+        If K is not symmetric positive definite or the path is malformed.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> tr = gecko.force_trace()                    # Fig 4: compression, then drag
+    >>> float(tr.f_perp[-1]), float(tr.f_par[-1])   # tensile at the end of the drag
+    (-7.0, 12.0)
     """
     K = paper_rigidity() if K is None else K
-    t, d_par, d_perp = (np.ascontiguousarray(np.asarray(a, dtype=np.float64).reshape(-1))
-                        for a in path)
-    tt = None if times is None else np.ascontiguousarray(np.asarray(times, dtype=np.float64).reshape(-1))
+    t, d_par, d_perp = (np.ascontiguousarray(_real_array(a, f"path[{i}]").reshape(-1)) for i, a in enumerate(path))
+    tt = None if times is None else np.ascontiguousarray(_real_array(times, "times").reshape(-1))
     r = _core.force_trace(_matrix(K), t, d_par, d_perp, tt, int(samples_per_segment))
     return ForceTrace(r["t"], r["d_par"], r["d_perp"], r["f_par"], r["f_perp"])
 
@@ -161,20 +353,85 @@ def force_trace(K=None, path=FIG4_SPATULA_PATH, *, times=None, samples_per_segme
 # ---- detachment (eqs 4, 7, 8, A2.6) --------------------------------------------------------
 
 def viscoelastic_detachment(V, G0, V_star, n, *, errors: str = "raise"):
-    """Eq 7: G(V) = G0 (1 + (V/V*)**n); V >= 0, G0, V*, n > 0. Broadcasts."""
+    """Viscoelastic detachment energy, paper 000 eq 7: G(V) = G0 (1 + (V/V*)^n).
+
+    Parameters
+    ----------
+    V : array_like
+        Drag velocity, >= 0.
+    G0, V_star, n : array_like
+        Threshold energy, characteristic velocity, exponent; all > 0. Broadcast together.
+    errors : {"raise", "nan"}, optional
+        Out-of-range input raises ``ValueError`` (default) or gives NaN for that element.
+
+    Returns
+    -------
+    float or numpy.ndarray
+
+    Raises
+    ------
+    ValueError
+        If an argument is out of range with ``errors="raise"``; the message names it and the
+        allowed range.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> float(gecko.viscoelastic_detachment(4.0, 1.0, 1.0, 0.5))
+    3.0
+    """
     shape, flat = _flat_args((V, G0, V_star, n))
     return _shaped(_core.viscoelastic_detachment(*flat, _error_code(errors)), shape)
 
 
 def eyring_detachment(V, G0, V_star, *, errors: str = "raise"):
-    """Eq 8 (plastic / Eyring): G(V) = G0 asinh(V/V*); V >= 0, G0, V* > 0. Broadcasts."""
+    """Plastic (Eyring) detachment energy, paper 000 eq 8: G(V) = G0 asinh(V/V*).
+
+    Parameters
+    ----------
+    V : array_like
+        Drag velocity, >= 0.
+    G0, V_star : array_like
+        Threshold energy and characteristic velocity, > 0. Broadcast together.
+    errors : {"raise", "nan"}, optional
+        Out-of-range input raises ``ValueError`` (default) or gives NaN for that element.
+
+    Returns
+    -------
+    float or numpy.ndarray
+
+    Raises
+    ------
+    ValueError
+        If an argument is out of range with ``errors="raise"``; the message names it and the
+        allowed range.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> round(float(gecko.eyring_detachment(1.0, 1.0, 1.0)), 6)
+    0.881374
+    """
     shape, flat = _flat_args((V, G0, V_star))
     return _shaped(_core.eyring_detachment(*flat, _error_code(errors)), shape)
 
 
 @dataclasses.dataclass(frozen=True)
 class ViscoelasticDetachment:
-    """The law of eq 7 as a callable object, G = law(V)."""
+    """The viscoelastic law of paper 000 eq 7 as a callable, G = law(V).
+
+    Parameters
+    ----------
+    G0, V_star, n : float
+        See :func:`viscoelastic_detachment`.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> law = gecko.ViscoelasticDetachment(G0=1.0, V_star=1.0, n=0.5)
+    >>> float(law(4.0))
+    3.0
+    """
 
     G0: float
     V_star: float
@@ -186,7 +443,19 @@ class ViscoelasticDetachment:
 
 @dataclasses.dataclass(frozen=True)
 class EyringDetachment:
-    """The law of eq 8 as a callable object, G = law(V)."""
+    """The plastic (Eyring) law of paper 000 eq 8 as a callable, G = law(V).
+
+    Parameters
+    ----------
+    G0, V_star : float
+        See :func:`eyring_detachment`.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> gecko.EyringDetachment(1.0, 1.0)([0.0, 1.0]).round(6)
+    array([0.      , 0.881374])
+    """
 
     G0: float
     V_star: float
@@ -196,16 +465,72 @@ class EyringDetachment:
 
 
 def detachment_stretch(K_par_par, f_par1, G, *, errors: str = "raise"):
-    """A2.6: lateral stretch at detachment, (-f1 + sqrt(f1**2 + 2 K G)) / K (cancellation-free)."""
+    """Lateral stretch at detachment, paper 000 eq A2.6.
+
+    Solves K dd^2/2 + f_par1 dd = G for the positive root, (-f1 + sqrt(f1^2 + 2 K G))/K, in a form
+    without cancellation.
+
+    Parameters
+    ----------
+    K_par_par : array_like
+        Lateral rigidity, > 0.
+    f_par1 : array_like
+        Lateral force just after re-sticking, finite.
+    G : array_like
+        Detachment energy, >= 0.
+    errors : {"raise", "nan"}, optional
+        Out-of-range input raises ``ValueError`` (default) or gives NaN for that element.
+
+    Returns
+    -------
+    float or numpy.ndarray
+
+    Raises
+    ------
+    ValueError
+        If an argument is out of range with ``errors="raise"``; the message names it and the
+        allowed range.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> float(gecko.detachment_stretch(2.0, 0.0, 1.0))
+    1.0
+    """
     shape, flat = _flat_args((K_par_par, f_par1, G))
     return _shaped(_core.detachment_stretch(*flat, _error_code(errors)), shape)
 
 
 def resonant_frequency(D, L, E, rho, *, errors: str = "raise"):
-    """Eq 4: nu_R = 0.14 (D / L**2) sqrt(E / rho); t_off ~ 1 / nu_R.
+    """Resonant frequency of a cantilevered spatula, paper 000 eq 4: 0.14 (D/L^2) sqrt(E/rho).
 
-    For D = 100 nm, L = 1 um, E = 1.5 GPa, rho = 1000 kg/m**3 this is 17.1 MHz; the paper prints
-    34.3 MHz, twice what its own formula gives.
+    The re-sticking time is about its inverse. For D = 100 nm, L = 1 um, E = 1.5 GPa,
+    rho = 1000 kg/m^3 this is 17.1 MHz; the paper prints 34.3 MHz, twice what its own formula gives
+    (docs/theory/frictional_adhesion.md).
+
+    Parameters
+    ----------
+    D, L, E, rho : array_like
+        Diameter, length, Young's modulus, density (SI), all > 0.
+    errors : {"raise", "nan"}, optional
+        Out-of-range input raises ``ValueError`` (default) or gives NaN for that element.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        In Hz for SI input.
+
+    Raises
+    ------
+    ValueError
+        If an argument is out of range with ``errors="raise"``; the message names it and the
+        allowed range.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> round(float(gecko.resonant_frequency(100e-9, 1e-6, 1.5e9, 1000.0)) / 1e6, 1)
+    17.1
     """
     shape, flat = _flat_args((D, L, E, rho))
     return _shaped(_core.resonant_frequency(*flat, _error_code(errors)), shape)
@@ -215,11 +540,26 @@ def resonant_frequency(D, L, E, rho, *, errors: str = "raise"):
 
 @dataclasses.dataclass(frozen=True)
 class SlidingModel:
-    """N spatulae of rigidity K (symmetric positive definite, K[0,1] < 0), re-sticking with
-    forces (f_par1, f_perp1), detaching at the energy ``law(V)``.
+    """N spatulae of rigidity K that re-stick with forces (f_par1, f_perp1) and detach at law(V).
 
-    ``law``: :class:`ViscoelasticDetachment`, :class:`EyringDetachment`, or any callable of V
-    (called with the array of velocities first, element by element if that fails).
+    Parameters
+    ----------
+    N : float
+        Number of spatulae.
+    K : tuple
+        Rigidity ((K_par_par, K_par_perp), (K_perp_par, K_perp_perp)), symmetric positive
+        definite with K[0][1] < 0.
+    f_par1, f_perp1 : float
+        Forces just after re-sticking.
+    law : callable
+        :class:`ViscoelasticDetachment`, :class:`EyringDetachment`, or any callable G(V) (called
+        with the array of velocities first, element by element if that fails).
+
+    Examples
+    --------
+    >>> import gecko
+    >>> gecko.FIG6_VISCOELASTIC.replace(N=2e5).N
+    200000.0
     """
 
     N: float
@@ -244,7 +584,24 @@ FIG6_PLASTIC = SlidingModel(N=1e5, K=((6.0, -5.0), (-5.0, 5.0)), f_par1=6e-7, f_
 
 
 class SteadySliding(NamedTuple):
-    """Time-averaged forces of the N spatulae, stretch at detachment and t_on = stretch / V."""
+    """Mean forces of steady sliding, from :func:`steady_sliding`.
+
+    Attributes
+    ----------
+    F_par, F_perp : float or numpy.ndarray
+        Time-averaged lateral and normal force of the N spatulae (F_perp < 0: tensile).
+    stretch : float or numpy.ndarray or None
+        Lateral stretch at detachment (None with ``forces_only=True``).
+    t_on : float or numpy.ndarray or None
+        Attached time per cycle, stretch / V.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> r = gecko.steady_sliding(1e-4)
+    >>> round(float(r.F_par), 4), r.t_on > 0
+    (0.0424, True)
+    """
 
     F_par: object
     F_perp: object
@@ -269,13 +626,40 @@ def _law_values(law, V_flat):
 
 def steady_sliding(V, model: SlidingModel = FIG6_VISCOELASTIC, *, t_off: float = 0.0,
                    errors: str = "raise", forces_only: bool = False) -> SteadySliding:
-    """Steady-sliding forces F_par(V), F_perp(V) of eqs 9-10, with finite ``t_off`` (eqs 5-6):
+    """Steady-sliding mean forces of paper 000 eqs 9-10, with a finite re-sticking time.
 
-        F = N t_on / (t_on + t_off) * (f1 + K[:,0] stretch / 2),  t_on = stretch / V,
+    F = N t_on/(t_on + t_off) (f1 + K[:, 0] dd/2), t_on = dd/V, where the stretch dd solves
+    K dd^2/2 + f_par1 dd = G(V) (eq A2.6). Built-in laws run entirely in C++.
 
-    where the stretch at detachment solves K dd**2/2 + f_par1 dd = G(V) (A2.6). ``V`` broadcasts
-    (any shape); built-in laws run entirely in C++, other callables are evaluated first.
-    ``forces_only=True`` skips ``stretch`` and ``t_on`` (returned as None): faster for long arrays.
+    Parameters
+    ----------
+    V : array_like
+        Drag velocities (any shape), >= 0.
+    model : SlidingModel, optional
+        Default :data:`FIG6_VISCOELASTIC`.
+    t_off : float, optional
+        Re-sticking time (default 0, the paper's limit).
+    errors : {"raise", "nan"}, optional
+        Out-of-range input raises (default) or gives NaN.
+    forces_only : bool, optional
+        Skip ``stretch`` and ``t_on`` (None): faster for long arrays.
+
+    Returns
+    -------
+    SteadySliding
+        ``F_par, F_perp, stretch, t_on`` of the shape of ``V``.
+
+    Raises
+    ------
+    ValueError
+        If V < 0 or the model is invalid, with ``errors="raise"``.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> r = gecko.steady_sliding([1e-5, 1e-4, 1e-3])
+    >>> r.F_par.round(4), r.F_perp.round(4)       # the normal force turns tensile as V grows
+    (array([0.0349, 0.0424, 0.0586]), array([ 0.0014, -0.0026, -0.0113]))
     """
     code = _error_code(errors)
     shape, (v,) = _flat_args((V,))
@@ -306,7 +690,28 @@ def steady_sliding(V, model: SlidingModel = FIG6_VISCOELASTIC, *, t_off: float =
 # ---- beyond the paper: stochastic check and fit -------------------------------------------
 
 class SpatulaSimulation(NamedTuple):
-    """Result of :func:`simulate_spatulae`: the force of N spatulae estimated from M simulated."""
+    """Result of :func:`simulate_spatulae`: the force of N spatulae estimated from M simulated.
+
+    Attributes
+    ----------
+    mean_par, mean_perp : float
+        Time averages of F(t) over the simulated duration.
+    std_par, std_perp : float
+        Standard deviations of F(t) over the sample times (the fluctuation).
+    stretch, t_on : float
+        Stretch at detachment and attached time per cycle.
+    detachments : int
+        Detachments simulated.
+    t, F_par, F_perp : numpy.ndarray
+        Sample times (midpoints) and F(t) there.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> sim = gecko.simulate_spatulae(1e-4, spatulae=200, seed=1)
+    >>> sim.detachments > 0, sim.F_par.shape
+    (True, (200,))
+    """
 
     mean_par: float      # time average of F_par(t) over [0, duration]
     mean_perp: float
@@ -324,11 +729,46 @@ def simulate_spatulae(V: float, model: SlidingModel = FIG6_VISCOELASTIC, *, spat
                       duration: Optional[float] = None, t_off: float = 0.0,
                       resticking: str = "fixed", samples: int = 200, seed: int = 1
                       ) -> SpatulaSimulation:
-    """Simulate ``spatulae`` independent spatulae dragged at ``V`` (stick, stretch, detach,
-    re-stick after ``t_off`` — fixed, or exponential with that mean) from a stationary random
-    phase; seeded ``mt19937_64``, exact event-driven integration. ``duration`` defaults to 100
-    cycles. The means converge to :func:`steady_sliding` with the same ``t_off``: the error
-    falls as (M T)**-1/2 for exponential re-sticking and as M**-1/2 T**-1 for a fixed t_off.
+    """Simulate independent spatulae dragged at ``V``: a stochastic check of :func:`steady_sliding`.
+
+    Each spatula sticks, stretches, detaches and re-sticks after ``t_off`` (fixed, or exponential
+    with that mean), starting from a stationary random phase; seeded ``mt19937_64``, exact
+    event-driven integration. The means converge to :func:`steady_sliding` with the same ``t_off``.
+
+    Parameters
+    ----------
+    V : float
+        Drag velocity, >= 0.
+    model : SlidingModel, optional
+        Default :data:`FIG6_VISCOELASTIC`.
+    spatulae : int, optional
+        Number M of simulated spatulae (default 1000); forces are scaled to the model's N.
+    duration : float, optional
+        Simulated time (default 100 cycles).
+    t_off : float, optional
+        Re-sticking time (default 0).
+    resticking : {"fixed", "exponential"}, optional
+    samples : int, optional
+        Sample times of F(t) (default 200).
+    seed : int, optional
+        Random seed (default 1); a seed gives the same result everywhere.
+
+    Returns
+    -------
+    SpatulaSimulation
+
+    Raises
+    ------
+    ValueError
+        If an argument is out of range.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> sim = gecko.simulate_spatulae(1e-4, spatulae=2000, seed=1)
+    >>> ref = gecko.steady_sliding(1e-4)
+    >>> abs(sim.mean_par / float(ref.F_par) - 1) < 1e-3
+    True
     """
     if resticking not in ("fixed", "exponential"):
         raise ValueError(f"resticking = {resticking!r} is not allowed: need 'fixed' or 'exponential'")
@@ -346,48 +786,236 @@ def simulate_spatulae(V: float, model: SlidingModel = FIG6_VISCOELASTIC, *, spat
                              r["F_perp"])
 
 
+@dataclasses.dataclass(frozen=True)
+class ParametricLaw:
+    """A user detachment law ``G = func(V, **params)`` with named parameters, for
+    :func:`steady_sliding`, :func:`simulate_spatulae` and :func:`fit_steady_sliding`.
+
+    ``func`` must accept an array of velocities (numpy-vectorised). ``positive`` names the
+    parameters that must stay positive (fitted as logarithms); default: all of them.
+    Example: ``ParametricLaw(lambda V, G0, a: G0 * (1 + a * np.log1p(V / 1e-4)), {"G0": 3e-14,
+    "a": 0.5})``.
+    """
+
+    func: Callable
+    params: dict
+    positive: Optional[tuple] = None
+
+    def __call__(self, V):
+        return self.func(V, **self.params)
+
+    def replace(self, **params) -> "ParametricLaw":
+        return dataclasses.replace(self, params={**self.params, **params})
+
+
 class SteadySlidingFit(NamedTuple):
-    """Result of :func:`fit_steady_sliding`."""
+    """Result of :func:`fit_steady_sliding`.
+
+    Attributes
+    ----------
+    model : SlidingModel
+        The fitted model.
+    names : tuple of str
+        The free parameters.
+    values, standard_errors : numpy.ndarray
+        Their estimates and standard errors (delta method from the fit coordinates).
+    covariance : numpy.ndarray
+        Covariance of the estimates.
+    rss : float
+        Sum of squared unweighted residuals (N**2).
+    iterations : int
+        Levenberg-Marquardt iterations.
+    status : str
+        "converged" (a first-order criterion holds at a finite chi**2; ``reason`` says which),
+        "not_identifiable" (converged, but the data do not determine the directions listed in
+        ``undetermined``; see the profile intervals), "max_iterations", "no_progress" or
+        "non_finite" (the fitted values or rss overflow).
+    reason : str
+        Why the fit stopped.
+    chi2, dof, condition : float, int, float
+        Weighted chi**2, degrees of freedom, condition number of the column-scaled J^T J.
+    undetermined : tuple of str
+        Directions the data cannot determine.
+    profile_lower, profile_upper : numpy.ndarray or None
+        Profile-likelihood intervals (chi**2 rise at the ``profile_level`` quantile; NaN when not
+        computed, +-inf where the profile never rises enough).
+    sigma_known : bool
+        Whether the covariance takes sigma as known (not rescaled by the reduced chi**2).
+
+    Examples
+    --------
+    >>> import numpy as np, gecko
+    >>> V = np.logspace(-6, -2, 20)
+    >>> r = gecko.steady_sliding(V)
+    >>> fit = gecko.fit_steady_sliding(V, r.F_par, r.F_perp, fit_f_par1=False)
+    >>> fit.status, len(fit.values) == len(fit.names)
+    ('converged', True)
+    """
 
     model: SlidingModel           # the fitted model
     names: tuple                  # free parameters
     values: np.ndarray            # their estimates
-    standard_errors: np.ndarray   # and standard errors (s**2 (J^T J)^-1, delta method)
+    standard_errors: np.ndarray   # and standard errors (delta method from the fit coordinates)
     covariance: np.ndarray
-    rss: float
+    rss: float                    # sum of squared unweighted residuals (N**2)
     iterations: int
-    status: str                   # "converged", "max_iterations" or "singular"
+    status: str
+    reason: str = ""
+    chi2: float = float("nan")    # sum of squared weighted residuals
+    dof: int = 0
+    condition: float = float("nan")   # of the column-scaled J^T J
+    undetermined: tuple = ()
+    profile_lower: Optional[np.ndarray] = None
+    profile_upper: Optional[np.ndarray] = None
+    sigma_known: bool = False
+
+
+def _sigma_array(s, n, name):
+    a = np.asarray(s, dtype=np.float64)
+    if a.ndim > 1 or (a.ndim == 1 and a.size != n):
+        raise ValueError(f"{name} must be a scalar or have one entry per velocity ({n}), got shape "
+                         f"{a.shape}")
+    a = np.ascontiguousarray(np.broadcast_to(a, (n,)), dtype=np.float64)
+    bad = ~((a > 0) & np.isfinite(a))
+    if np.any(bad):
+        i = int(np.flatnonzero(bad)[0])
+        raise ValueError(f"gecko.fit_steady_sliding: {name}[{i}] = {float(a[i])!r} is out of range: need "
+                         "0 < sigma < inf")
+    return a
+
+    @property
+    def status_code(self) -> "FitStatus":
+        """``status`` as a :class:`FitStatus` member (code compares these, not the text)."""
+        return FitStatus[self.status]
 
 
 def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC, *,
                        fit_f_par1: bool = True, fit_f_perp1: bool = True,
-                       fit_coupling: bool = False, max_iterations: int = 200) -> SteadySlidingFit:
-    """Levenberg-Marquardt fit of eqs 9-10 to measured (V, F_par, F_perp).
+                       fit_coupling: bool = False, max_iterations: int = 200,
+                       sigma=None, absolute_sigma: Optional[bool] = None, profile: bool = False,
+                       profile_level: float = 0.6826894921370859,
+                       max_condition: float = 1e10) -> SteadySlidingFit:
+    """Weighted least-squares fit of eqs 9-10 to measured (V, F_par, F_perp).
 
-    Free: the law's (G0, V*, n) [viscoelastic] or (G0, V*) [Eyring] (as logarithms, so they stay
-    positive), and ``f_par1``, ``f_perp1`` and ``K[0,1]`` as chosen; ``N``, ``K[0,0]``, ``K[1,1]``
-    are held at the guess's values. Standard errors from the residual variance.
+    Free: the law's parameters ((G0, V*, n) viscoelastic, (G0, V*) Eyring, or the named
+    parameters of a :class:`ParametricLaw`; positive ones as logarithms), and ``f_par1``,
+    ``f_perp1`` and ``K[0,1]`` as chosen; ``N``, ``K[0,0]``, ``K[1,1]`` are held (only
+    ``N f1``, ``N**2 K[0,0] G`` and ``K[0,1]/K[0,0]`` enter eqs 9-10). Solved by
+    Levenberg-Marquardt with QR-factorised steps (C++).
+
+    ``sigma = (sigma_par, sigma_perp)``: standard deviations of the two force components,
+    scalars or one per velocity. With ``absolute_sigma`` (default when sigma is given) they are
+    taken as known and the covariance is not rescaled; otherwise (and without sigma) it is
+    rescaled by the reduced chi**2. ``profile=True`` adds profile-likelihood intervals at
+    ``profile_level`` (always computed when the status is "not_identifiable").
+
+    Parameters
+    ----------
+    V, F_par, F_perp : array_like
+        Velocities and the two mean forces, same length, more data than parameters.
+    guess : SlidingModel, optional
+        Starting model; its law (viscoelastic, Eyring or a ParametricLaw) is the one fitted.
+    fit_f_par1, fit_f_perp1, fit_coupling : bool, optional
+        Free the force offsets (default True) and the coupling K[0,1] (default False).
+    max_iterations : int, optional
+        Default 200.
+    sigma : tuple of (float or array_like), optional
+        ``(sigma_par, sigma_perp)``, scalars or one per velocity.
+    absolute_sigma : bool, optional
+        Take sigma as known (default True when sigma is given).
+    profile : bool, optional
+        Compute profile-likelihood intervals.
+    profile_level : float, optional
+        Coverage of the profile intervals (default one standard deviation, 0.6827).
+    max_condition : float, optional
+        Condition number above which a direction counts as undetermined.
+
+    Returns
+    -------
+    SteadySlidingFit
+        Estimates, standard errors, covariance, rss, status and the reason it stopped.
+
+    Raises
+    ------
+    ValueError
+        If the data are not finite, of different lengths or too few, sigma is not positive, or
+        the law cannot be fitted.
+
+    Examples
+    --------
+    >>> import numpy as np, gecko
+    >>> V = np.logspace(-6, -2, 40)
+    >>> r = gecko.steady_sliding(V, gecko.FIG6_VISCOELASTIC)
+    >>> fit = gecko.fit_steady_sliding(V, r.F_par, r.F_perp, fit_f_par1=False)
+    >>> fit.status
+    'converged'
     """
+    from statistics import NormalDist
+
     shape, (v, fp, fq) = _flat_args((V, F_par, F_perp))
+    if not isinstance(guess, SlidingModel):
+        raise ValueError(f"guess = {guess!r} is not allowed: need a SlidingModel")
     law = guess.law
+    custom = {}
     if isinstance(law, ViscoelasticDetachment):
         kind, n = 0, float(law.n)
     elif isinstance(law, EyringDetachment):
         kind, n = 1, 1.0
+    elif isinstance(law, ParametricLaw):
+        kind, n = 2, 1.0
+        names = list(law.params)
+        if not names:
+            raise ValueError("guess.law.params must name at least one parameter")
+        positive = tuple(names) if law.positive is None else tuple(law.positive)
+        unknown = set(positive) - set(names)
+        if unknown:
+            raise ValueError(f"guess.law.positive names unknown parameters {sorted(unknown)}")
+        func = law.func
+
+        def G(Vv, pv, _names=names, _func=func):
+            return np.asarray(_func(Vv, **dict(zip(_names, map(float, pv)))), dtype=np.float64)
+
+        custom = dict(custom_G=G, custom_names=names,
+                      custom_values=[_scalar(law.params[k], f"guess.law.params[{k!r}]")
+                                     for k in names],
+                      custom_positive=[k in positive for k in names])
     else:
-        raise ValueError("guess.law must be a ViscoelasticDetachment or an EyringDetachment")
+        raise ValueError("guess.law must be a ViscoelasticDetachment, an EyringDetachment or a "
+                         "ParametricLaw (a callable with named parameters)")
+    if not (0 < profile_level < 1):
+        raise ValueError(f"profile_level = {profile_level!r} is out of range: need 0 < level < 1")
+    if not (max_condition > 1):
+        raise ValueError(f"max_condition = {max_condition!r} is out of range: need > 1")
+    if int(max_iterations) < 0:
+        raise ValueError(f"max_iterations = {max_iterations!r} is out of range: need >= 0")
+    delta = NormalDist().inv_cdf(0.5 + profile_level / 2) ** 2
+    sp = sq = None
+    if sigma is not None:
+        if not (isinstance(sigma, (tuple, list)) and len(sigma) == 2):
+            raise ValueError("sigma must be a pair (sigma_par, sigma_perp) of scalars or arrays")
+        sp = _sigma_array(sigma[0], v.size, "sigma_par")
+        sq = _sigma_array(sigma[1], v.size, "sigma_perp")
+    known = sigma is not None and (True if absolute_sigma is None else bool(absolute_sigma))
     r = _core.fit_steady_sliding(v, fp, fq, float(guess.N), _matrix(guess.K), float(guess.f_par1),
-                                 float(guess.f_perp1), kind, float(law.G0), float(law.V_star), n,
-                                 bool(fit_f_par1), bool(fit_f_perp1), bool(fit_coupling),
-                                 int(max_iterations))
+                                 float(guess.f_perp1), kind,
+                                 float(getattr(law, "G0", 1.0)), float(getattr(law, "V_star", 1.0)),
+                                 n, bool(fit_f_par1), bool(fit_f_perp1), bool(fit_coupling),
+                                 _check_count(max_iterations, "max_iterations"), sp, sq, known,
+                                 bool(profile), float(delta),
+                                 float(max_condition), **custom)
     values = dict(zip(r["names"], r["values"]))
     if kind == 0:
         new_law = ViscoelasticDetachment(values["G0"], values["V_star"], values["n"])
-    else:
+    elif kind == 1:
         new_law = EyringDetachment(values["G0"], values["V_star"])
+    else:
+        new_law = law.replace(**{k: values[k] for k in law.params})
     K = np.asarray(r["K"])
     model = SlidingModel(N=guess.N, K=tuple(map(tuple, K.tolist())), f_par1=float(r["f_par1"]),
                          f_perp1=float(r["f_perp1"]), law=new_law)
     return SteadySlidingFit(model, tuple(r["names"]), np.asarray(r["values"]),
                             np.asarray(r["standard_errors"]), np.asarray(r["covariance"]),
-                            float(r["rss"]), int(r["iterations"]), str(r["status"]))
+                            float(r["rss"]), int(r["iterations"]), str(r["status"]),
+                            str(r["reason"]), float(r["chi2"]), int(r["dof"]),
+                            float(r["condition"]), tuple(r["undetermined"]),
+                            np.asarray(r["profile_lower"]), np.asarray(r["profile_upper"]), known)

@@ -12,6 +12,7 @@ namespace bindings {
 namespace py = pybind11;
 
 void bind_elliptic(py::module_& m);
+void bind_seta_types(py::module_& m);  // the design type and status enums, before their users
 void bind_seta(py::module_& m);
 void bind_friction(py::module_& m);
 

@@ -364,10 +364,17 @@ void bind_friction(py::module_& m) {
      py::arg("samples"), py::arg("seed"));
 
   // ---- fit ---------------------------------------------------------------------------------
+  // kind 0 viscoelastic, 1 Eyring (GIL released), 2 a Python law G(V, p) with named parameters
+  // (GIL held: the law is called from the solver).
   m.def("fit_steady_sliding", [](const darray& V, const darray& F_par, const darray& F_perp,
                                  double N, const darray& K, double f_par1, double f_perp1,
                                  int kind, double G0, double V_star, double n, bool fit_f_par1,
-                                 bool fit_f_perp1, bool fit_coupling, int max_iterations) {
+                                 bool fit_f_perp1, bool fit_coupling, int max_iterations,
+                                 py::object sigma_par, py::object sigma_perp, bool absolute_sigma,
+                                 bool profile, double profile_delta, double max_condition,
+                                 py::object custom_G, std::vector<std::string> custom_names,
+                                 std::vector<double> custom_values,
+                                 std::vector<bool> custom_positive) {
     const py::ssize_t m = V.size();
     require_equal(m, F_par, "F_par");
     require_equal(m, F_perp, "F_perp");
@@ -377,14 +384,22 @@ void bind_friction(py::module_& m) {
     opt.fit_f_perp1 = fit_f_perp1;
     opt.fit_coupling = fit_coupling;
     opt.max_iterations = max_iterations;
-    return with_law<default_policy>(kind, G0, V_star, n, [&](auto law) {
-      decltype(gecko::fit_steady_sliding(V.data(), F_par.data(), F_perp.data(), std::size_t(m), p,
-                                         law, opt)) r;
-      {
-        py::gil_scoped_release release;
-        r = gecko::fit_steady_sliding(V.data(), F_par.data(), F_perp.data(), std::size_t(m), p,
-                                      law, opt);
-      }
+    opt.absolute_sigma = absolute_sigma;
+    opt.profile = profile;
+    opt.profile_delta = profile_delta;
+    opt.max_condition = max_condition;
+    darray sp, sq;
+    if (!sigma_par.is_none()) {
+      sp = sigma_par.cast<darray>();
+      require_equal(m, sp, "sigma_par");
+      opt.sigma_par = sp.data();
+    }
+    if (!sigma_perp.is_none()) {
+      sq = sigma_perp.cast<darray>();
+      require_equal(m, sq, "sigma_perp");
+      opt.sigma_perp = sq.data();
+    }
+    auto pack = [&](const auto& r) {
       py::dict out;
       out["names"] = r.names;
       out["values"] = r.values;
@@ -396,17 +411,61 @@ void bind_friction(py::module_& m) {
         for (py::ssize_t j = 0; j < np_; ++j) c(i, j) = r.covariance(i, j);
       out["covariance"] = cov;
       out["rss"] = r.rss;
+      out["chi2"] = r.chi2;
+      out["dof"] = r.dof;
       out["iterations"] = r.iterations;
       out["status"] = std::string(to_string(r.status));
+      out["reason"] = r.reason;
+      out["condition"] = r.condition;
+      out["undetermined"] = r.undetermined;
+      out["profile_lower"] = r.profile_lower;
+      out["profile_upper"] = r.profile_upper;
       out["f_par1"] = r.params.f_par1;
       out["f_perp1"] = r.params.f_perp1;
       out["K"] = from_mat2(r.params.K);
       return out;
+    };
+    if (kind == 2) {
+      custom_detachment<double> law;
+      law.names = custom_names;
+      law.values = custom_values;
+      law.positive = custom_positive;
+      py::function G = custom_G.cast<py::function>();
+      const std::size_t k = custom_names.size();
+      law.G = [G, k](const double* v, std::size_t nv, const double* par, double* out) {
+        py::array_t<double> vv(static_cast<py::ssize_t>(nv), v);
+        py::array_t<double> pp(static_cast<py::ssize_t>(k), par);
+        py::array_t<double> g = py::array_t<double>::ensure(G(vv, pp));
+        if (!g || g.size() != static_cast<py::ssize_t>(nv))
+          throw std::invalid_argument(
+              "gecko.fit_steady_sliding: the law must return one G per velocity");
+        const double* gd = g.data();
+        for (std::size_t i = 0; i < nv; ++i) out[i] = gd[i];
+      };
+      const auto r = gecko::fit_steady_sliding(V.data(), F_par.data(), F_perp.data(),
+                                               std::size_t(m), p, law, opt);
+      return pack(r);
+    }
+    return with_law<default_policy>(kind, G0, V_star, n, [&](auto law) {
+      decltype(gecko::fit_steady_sliding(V.data(), F_par.data(), F_perp.data(), std::size_t(m), p,
+                                         law, opt)) r;
+      {
+        py::gil_scoped_release release;
+        r = gecko::fit_steady_sliding(V.data(), F_par.data(), F_perp.data(), std::size_t(m), p,
+                                      law, opt);
+      }
+      return pack(r);
     });
   }, py::arg("V"), py::arg("F_par"), py::arg("F_perp"), py::arg("N"), py::arg("K"),
      py::arg("f_par1"), py::arg("f_perp1"), py::arg("kind"), py::arg("G0"), py::arg("V_star"),
      py::arg("n"), py::arg("fit_f_par1") = true, py::arg("fit_f_perp1") = true,
-     py::arg("fit_coupling") = false, py::arg("max_iterations") = 200);
+     py::arg("fit_coupling") = false, py::arg("max_iterations") = 200,
+     py::arg("sigma_par") = py::none(), py::arg("sigma_perp") = py::none(),
+     py::arg("absolute_sigma") = true, py::arg("profile") = false, py::arg("profile_delta") = 1.0,
+     py::arg("max_condition") = 1e10, py::arg("custom_G") = py::none(),
+     py::arg("custom_names") = std::vector<std::string>(),
+     py::arg("custom_values") = std::vector<double>(),
+     py::arg("custom_positive") = std::vector<bool>());
 }
 
 }  // namespace bindings

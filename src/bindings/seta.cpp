@@ -15,6 +15,7 @@
 #include "gecko/core/parallel.hpp"
 #include "gecko/peel.hpp"
 #include "gecko/seta.hpp"
+#include "vectorize.hpp"
 
 namespace gecko {
 namespace bindings {
@@ -101,7 +102,10 @@ void line_at(const TwoLevelSeta<double>& s, const double* Ft, std::size_t n, int
 
 }  // namespace
 
+void bind_seta_contact(py::module_& m);  // the forward problem, at the end of this file
+
 void bind_seta(py::module_& m) {
+  bind_seta_contact(m);
   m.def("seta_validate", [](const darray& params, double Ft) {
     const auto s = design_from(params);
     detail::check_seta<double, default_policy>(s, "gecko.TwoLevelSeta");
@@ -490,6 +494,100 @@ void bind_seta(py::module_& m) {
     }
     return out;
   }, py::arg("Ft"), py::arg("w"), py::arg("errors") = 0);
+}
+
+// ---- the forward problem (gecko/seta/contact_state.hpp) ---------------------------------------
+namespace {
+
+struct contact_columns {
+  py::array_t<double> a, contact_length, theta_joint, rate_joint, rate_base, strain, err;
+  py::array_t<std::int32_t> tp, tp_beam, tp_spatula, equilibria, status;
+  explicit contact_columns(py::ssize_t n)
+      : a(n), contact_length(n), theta_joint(n), rate_joint(n), rate_base(n), strain(n), err(n), tp(n),
+        tp_beam(n), tp_spatula(n), equilibria(n), status(n) {}
+  void put(std::size_t i, const contact_result<double>& r) {
+    a.mutable_data()[i] = r.a;
+    contact_length.mutable_data()[i] = r.contact_length;
+    theta_joint.mutable_data()[i] = r.theta_joint;
+    rate_joint.mutable_data()[i] = r.theta_rate_joint;
+    rate_base.mutable_data()[i] = r.theta_rate_base;
+    strain.mutable_data()[i] = r.max_axial_strain;
+    err.mutable_data()[i] = r.energy_release_rate;
+    tp.mutable_data()[i] = r.turning_points;
+    tp_beam.mutable_data()[i] = r.turning_points_beam;
+    tp_spatula.mutable_data()[i] = r.turning_points_spatula;
+    equilibria.mutable_data()[i] = r.equilibria;
+    status.mutable_data()[i] = static_cast<std::int32_t>(r.status);
+  }
+  py::dict as_dict() const {
+    py::dict d;
+    d["a"] = a;
+    d["contact_length"] = contact_length;
+    d["theta_joint"] = theta_joint;
+    d["theta_rate_joint"] = rate_joint;
+    d["theta_rate_base"] = rate_base;
+    d["turning_points"] = tp;
+    d["turning_points_beam"] = tp_beam;
+    d["turning_points_spatula"] = tp_spatula;
+    d["max_axial_strain"] = strain;
+    d["energy_release_rate"] = err;
+    d["equilibria"] = equilibria;
+    d["status"] = status;
+    return d;
+  }
+};
+
+template <class Policy>
+py::dict contact_at(const TwoLevelSeta<double>& s, const darray& Fn, const darray& Ft, int scan_points,
+                    int threads, bool all) {
+  if (Fn.ndim() != 1 || Ft.ndim() != 1 || Fn.size() != Ft.size())
+    throw std::invalid_argument("gecko._core: Fn and Ft must be flat arrays of equal length");
+  const auto n = static_cast<std::size_t>(Fn.size());
+  contact_options<double> opt;
+  if (scan_points > 0) opt.scan_points = scan_points;
+  const contact_solver<double, Policy> solve(s, opt);
+  const double *fn = Fn.data(), *ft = Ft.data();
+  const unsigned nt = threads_for(n, threads);
+  if (!all) {
+    std::vector<contact_result<double>> out(n);
+    for_each_element(n, nt, [&](std::size_t i) { out[i] = solve(fn[i], ft[i]); });
+    contact_columns cols(static_cast<py::ssize_t>(n));
+    for (std::size_t i = 0; i < n; ++i) cols.put(i, out[i]);
+    return cols.as_dict();
+  }
+  // Every equilibrium: rows (element, state), the summary status per element.
+  std::vector<typename contact_solver<double, Policy>::all_result> out(n);
+  for_each_element(n, nt, [&](std::size_t i) { out[i] = solve.equilibria(fn[i], ft[i]); });
+  std::size_t rows = 0;
+  for (const auto& r : out) rows += r.states.size();
+  contact_columns cols(static_cast<py::ssize_t>(rows));
+  py::array_t<std::int64_t> element(static_cast<py::ssize_t>(rows));
+  py::array_t<std::int32_t> summary(static_cast<py::ssize_t>(n));
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    summary.mutable_data()[i] = static_cast<std::int32_t>(out[i].status);
+    for (const auto& st : out[i].states) {
+      element.mutable_data()[k] = static_cast<std::int64_t>(i);
+      cols.put(k++, st);
+    }
+  }
+  py::dict d = cols.as_dict();
+  d["element"] = element;
+  d["summary_status"] = summary;
+  return d;
+}
+
+}  // namespace
+
+void bind_seta_contact(py::module_& m) {
+  m.def("seta_contact_state", [](const darray& params, const darray& Fn, const darray& Ft, int errors,
+                                 bool all, int scan_points, int threads) {
+    const auto s = design_from(params);
+    if (errors == static_cast<int>(on_error::nan))
+      return contact_at<nan_policy>(s, Fn, Ft, scan_points, threads, all);
+    return contact_at<default_policy>(s, Fn, Ft, scan_points, threads, all);
+  }, py::arg("params"), py::arg("Fn"), py::arg("Ft"), py::arg("errors") = 0, py::arg("all") = false,
+     py::arg("scan_points") = 0, py::arg("threads") = 0);
 }
 
 }  // namespace bindings

@@ -1,4 +1,4 @@
-// Tests of gecko/beam/parabolic.hpp: the Appendix-1 closed form (models.md §2).
+// Tests of gecko/beam/parabolic.hpp: the Appendix-1 closed form (docs/theory/frictional_adhesion.md).
 #include <catch2/catch.hpp>
 
 #include <cmath>

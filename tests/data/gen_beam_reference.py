@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Reference values for the curved-beam compliance (models.md §2, Appendix 1 of paper 000).
+"""Reference values for the curved-beam compliance (docs/theory/frictional_adhesion.md, Appendix 1 of paper 000).
 
 Independent of the C++ code: the Castigliano integrals are evaluated here with mpmath at 30
 significant digits by mpmath's tanh-sinh quadrature after x = L u^2 (with its own error estimate
@@ -50,7 +50,7 @@ def main():
     rows = []
     s17 = mp.sqrt(17)
     lg = mp.log(4 + s17)
-    # Appendix 1 closed form, with the sign of a11 as corrected in models.md.
+    # Appendix 1 closed form, with the sign of a11 as corrected in docs/theory/frictional_adhesion.md.
     a11 = 33 * s17 / 512 - lg / 2048
     a12 = (391 * s17 + 1) / 3840
     a22 = 2077 * s17 / 12288 + lg / 16384

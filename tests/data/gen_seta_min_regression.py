@@ -5,7 +5,7 @@ Regenerate (from the repository root; about 2 min on a busy core):
 
     python3 tests/data/gen_seta_min_regression.py      # writes tests/data/seta_min_regression.csv
 
-For each design: the interior minimum of Fn along the critical line (models.md §1), by the ODE
+For each design: the interior minimum of Fn along the critical line (docs/theory/two_level_seta.md), by the ODE
 route of gen_seta_reference.py (arbitrary-precision Taylor shooting, seta_taylor.py; no Carlson
 forms, no C++ code): secant iteration on dFn/dFt = 0 with central differences of Fn(Ft) solved
 to 1e-32 (refine_min, h = 1e-10 F_scale), started from the double-precision guess given below

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""High-precision reference data for the two-level seta critical line of adhesion (models.md §1).
+"""High-precision reference data for the two-level seta critical line of adhesion (docs/theory/two_level_seta.md).
 
 Regenerate (from the repository root; 3-5 min on 2 busy cores, 2 worker processes;
 SETA_REF_PROCS=1 for a single process):
@@ -18,7 +18,7 @@ Outputs
                               the end of the line at (Ft)max, folds, sticky_at_rest).
   seta_reference_meta.json    seed, settings and the verification statistics of this run.
 
-Model (models.md §1, paper eqs 1-5).  s is the undeformed arc length, angles from the substrate
+Model (docs/theory/two_level_seta.md, paper eqs 1-5).  s is the undeformed arc length, angles from the substrate
 normal.  Segment i: EI_i theta'' = -(Fn sin theta + Ft cos theta)(1 + T/EA_i),
 T = Ft sin theta - Fn cos theta;  base theta1(0) = alpha1;  joint theta2(l1) = theta1(l1) + alpha2,
 EI2 theta2'(l1) = EI1 theta1'(l1);  contact edge at the critical state a = l1 + l2: theta2(a) = pi/2
@@ -33,7 +33,7 @@ h'(s) = cos theta, so theta2'(a) < 0 would put theta > pi/2 just before the edge
 which vanishes at Ft = (Ft)max = sqrt(2 EA2 w): the physical critical line ends there, with
 dFn/dFt infinite (Fn - Fn_end proportional to sqrt((Ft)max - Ft)); the zero set of the same equations
 continues past it with Ft decreasing again and theta2'(a) < 0 - this is the "bend back near
-(Ft)max" of models.md §1, and it is not a physical critical state.  In none of the 37 designs does
+(Ft)max" of docs/theory/two_level_seta.md, and it is not a physical critical state.  In none of the 37 designs does
 the line fold (d Ft/ds = 0) before (Ft)max; on the Ft < 0 side, three designs fold (the tracking
 stops there, targets beyond are not reached).  The first integrals then give M2 = Ft + w.
 
@@ -46,8 +46,8 @@ Routes (both in arbitrary precision, neither uses Carlson R_F, closed forms or t
      (Fn, theta1'(0))) and require both tip residuals < 1e-24.  Digits: every state is solved again
      with 170-bit arithmetic, order 50, truncation < 2^-150; the max |dFn| between the two settings
      is reported in the meta file (typically ~1e-32).
-  2. Quadrature ("quad", seta_quad.py): the first integrals and the two length equations (models.md
-     §1 "First integrals", "Lengths") solved for (Fn, beta) by 2-D Newton at mp.dps = 30 with
+  2. Quadrature ("quad", seta_quad.py): the first integrals and the two length equations (docs/theory/two_level_seta.md
+     "First integrals", "Lengths") solved for (Fn, beta) by 2-D Newton at mp.dps = 30 with
      tanh-sinh quadrature, started from the double-precision guess (not from the ODE result).
      Segments with turning points are split at the turning angles (exact roots of the radicand),
      each piece integrated in the distance from the turning angle with a cancellation-free
@@ -66,7 +66,7 @@ double-precision stage (scipy DOP853) counts them independently on a 400-point g
 are compared and disagreements reported in the meta file.
 
 Finding the states (double precision, seta_double.py, guesses only):
-  * natural state at Ft = 0 by homotopy from the small-deformation limit (models.md eq 18);
+  * natural state at Ft = 0 by homotopy from the small-deformation limit (paper 001 eq 18, docs/theory/two_level_seta.md);
   * continuation of the zero contour g(Fn, tau) = 0 (pseudo-arclength), tau = (Ft)max
     asin(Ft/(Ft)max) for finite EA2 (smooth through the line end) or tau = Ft for EA2 = inf; folds
     (d tau/ds changing sign) increment the `branch` index of the states found after them;

@@ -3,7 +3,7 @@
 
     python3 tests/data/gen_seta_solver_segments.py     # writes tests/data/seta_solver_segments.csv
 
-models.md §1, first integral: 1/2 EI theta'^2 = R = M - N sin(theta - phi) - N^2 sin^2(theta - phi)/(2EA).
+docs/theory/two_level_seta.md, first integral: 1/2 EI theta'^2 = R = M - N sin(theta - phi) - N^2 sin^2(theta - phi)/(2EA).
 A case is (EI, EA, M, Fn, Ft, theta_start, theta_end, sign_start, sign_end): the elastica leaves
 theta_start with theta' of sign_start and arrives at theta_end with sign_end, along the shortest
 such path (theta reverses only at turning points, where R = 0). Its length

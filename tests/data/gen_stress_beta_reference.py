@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
-"""Generate tests/data/stress_beta_reference.csv: campaign states (bench/results/stress.md) whose
+"""Generate tests/data/stress_beta_reference.csv: campaign states (validation/results/stress.md) whose
 beta the double-precision verifier cannot confirm (strong tension: its tip-to-joint shot has
 |dbeta/dFn| ~ 1e5..1e8), solved at 60 digits by the Taylor-series shooting of
-bench/stress/beta_conditioning.py (order 40, mpmath; root Fn* of theta1(0) = alpha1 by secant to
+validation/beta_conditioning.py (order 40, mpmath; root Fn* of theta1(0) = alpha1 by secant to
 1e-30, beta* = theta2(l1) there; the same at twice the steps agrees to < 1e-40).
 
-Input: bench/results/stress_beta.json (written by beta_conditioning.py --json) for the designs, Ft
+Input: validation/results/stress_beta.json (written by beta_conditioning.py --json) for the designs, Ft
 and the starting Fn of the secant; the reference values are recomputed here.
 
     python3 tests/data/gen_stress_beta_reference.py
@@ -18,8 +18,8 @@ import sys
 import mpmath as mp
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "bench", "stress"))
-import beta_conditioning  # noqa: E402
+sys.path.insert(0, os.path.join(HERE, "..", ".."))  # a script: the repository root for the validation package
+from validation import beta_conditioning  # noqa: E402
 
 FIELDS = ("EI1", "EI2", "EA1", "EA2", "l1", "l2", "alpha1", "alpha2", "w")
 

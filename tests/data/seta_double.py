@@ -8,7 +8,7 @@ The critical line is the zero set of the scalar function
 
     g(Fn, Ft) = theta1(0; Fn, Ft) - alpha1
 
-where theta1(0) comes from integrating the elastica (models.md §1, eqs 1-5) *backwards* from the
+where theta1(0) comes from integrating the elastica (docs/theory/two_level_seta.md, eqs 1-5) *backwards* from the
 contact edge s = a = l1 + l2, at which every condition is known (theta2(a) = pi/2 and, from
 Griffith's condition with theta2'(a) > 0, theta2'(a) = kappa(Ft) = sqrt(2 (w - Ft^2/(2 EA2)) / EI2)),
 through the joint (theta1 = theta2 - alpha2, EI1 theta1' = EI2 theta2') down to the base.
@@ -79,7 +79,7 @@ def count_turning(d, Fn, Ft, n=400, kappa=None):
 
 
 def linear_fn0(d):
-    """Small-deformation (Fn)0 from models.md §1 eq 18 with Ft = 0 (qualitative only)."""
+    """Small-deformation (Fn)0 from docs/theory/two_level_seta.md eq 18 with Ft = 0 (qualitative only)."""
     EI1, EI2, l1, l2, w = d["EI1"], d["EI2"], d["l1"], d["l2"], d["w"]
     a1, a2 = d["alpha1"], d["alpha2"]
     Meq = math.sqrt(2 * EI2 * w)
@@ -215,7 +215,7 @@ def track(d, Fn0, direction, tau_stop, fn_limit, ds_max, max_pts=1500, stop_on_f
 def natural_state(d):
     """Critical Fn at Ft = 0 on the natural branch, by homotopy from the small-deformation limit:
     design(lam) has alpha2 + (1 - lam)(pi/2 - alpha1 - alpha2) and w lam^2, so that as lam -> 0 the
-    required rotation and the adhesion moment both vanish like lam and models.md eq 18 becomes
+    required rotation and the adhesion moment both vanish like lam and paper 001 eq 18 (docs/theory/two_level_seta.md) becomes
     exact; the root in Fn is followed from lam = 1e-3 (started from eq 18) to lam = 1."""
     Delta = math.pi / 2 - d["alpha1"] - d["alpha2"]
 

@@ -1,4 +1,4 @@
-"""Quadrature route of the seta reference generator: the two length equations of models.md §1
+"""Quadrature route of the seta reference generator: the two length equations of docs/theory/two_level_seta.md
 ("First integrals", "Lengths"; paper eqs 8-15) at the critical state a = l1 + l2, solved for
 (Fn, beta = theta2(l1)) by a 2-D Newton iteration in mpmath (mp.dps = 30, tanh-sinh quadrature).
 

@@ -1,5 +1,5 @@
 """ODE route of the seta reference generator: arbitrary-precision Taylor-series shooting of the
-elastica of models.md §1 (governing equations, paper eqs 1-5), NOT its first integrals.
+elastica of docs/theory/two_level_seta.md (governing equations, paper eqs 1-5), NOT its first integrals.
 
 Per segment (EI, c = 1/EA, c = 0 for EA = inf):
 
@@ -134,7 +134,7 @@ def mp_design(d):
 
 
 def kappa(d, Ft):
-    """theta2'(a) > 0 from Griffith's condition (models.md §1, contact edge)."""
+    """theta2'(a) > 0 from Griffith's condition (docs/theory/two_level_seta.md, contact edge)."""
     c2 = 0 if d["EA2"] == mp.inf else 1 / d["EA2"]
     return mp.sqrt(2 * (d["w"] - Ft * Ft * c2 / 2) / d["EI2"])
 

@@ -1,4 +1,4 @@
-// Tests of gecko/friction/force_trace.hpp: Figs 4 and 8 of paper 000 (models.md §2).
+// Tests of gecko/friction/force_trace.hpp: Figs 4 and 8 of paper 000 (docs/theory/frictional_adhesion.md).
 #include <catch2/catch.hpp>
 
 #include <cmath>

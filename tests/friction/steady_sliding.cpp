@@ -1,4 +1,4 @@
-// Tests of gecko/friction/steady_sliding.hpp: eqs 5, 6, 9, 10 of paper 000 (models.md §2).
+// Tests of gecko/friction/steady_sliding.hpp: eqs 5, 6, 9, 10 of paper 000 (docs/theory/frictional_adhesion.md).
 #include <catch2/catch.hpp>
 
 #include <Eigen/LU>

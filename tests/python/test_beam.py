@@ -1,4 +1,4 @@
-"""gecko.friction, curved-beam part: Castigliano compliance and rigidity (models.md §2)."""
+"""gecko.friction, curved-beam part: Castigliano compliance and rigidity (docs/theory/frictional_adhesion.md)."""
 import csv
 import math
 import pathlib

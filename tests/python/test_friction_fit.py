@@ -49,3 +49,115 @@ def test_fit_bad_input():
         gecko.fit_steady_sliding(V[:2], Fp[:2], Fp[:2])
     with pytest.raises(ValueError, match="law"):
         gecko.fit_steady_sliding(V, Fp, Fp, gecko.FIG6_VISCOELASTIC.replace(law=lambda v: v))
+
+
+def data25(model, sp, sq, seed):
+    rng = np.random.default_rng(seed)
+    V = np.logspace(-6, -2, 25)
+    r = gecko.steady_sliding(V, model)
+    return V, r.F_par + sp * rng.standard_normal(25), r.F_perp + sq * rng.standard_normal(25)
+
+
+@pytest.mark.parametrize("preset,hold_f1,sp,sq,known", [
+    ("viscoelastic", True, 5e-4, 5e-4, False), ("viscoelastic", True, 5e-4, 2e-4, True),
+    ("plastic", False, 5e-4, 5e-4, False), ("plastic", False, 2e-4, 8e-4, True)])
+def test_fit_coverage_200_seeds(preset, hold_f1, sp, sq, known):
+    # 2 standard errors cover the truth in 95 % of fits if they are calibrated; 90 % over 200
+    # seeds is 3.5 binomial standard deviations below. The viscoelastic fit holds f_par1 = 0
+    # as the paper's fit does (with it free the plateau and f_par1 are nearly degenerate).
+    truth = gecko.FIG6_VISCOELASTIC if preset == "viscoelastic" else gecko.FIG6_PLASTIC
+    law = truth.law
+    tv = ([law.G0, law.V_star, law.n] if preset == "viscoelastic" else [law.G0, law.V_star])
+    tv += ([] if hold_f1 else [truth.f_par1]) + [truth.f_perp1]
+    conv, within = 0, np.zeros(len(tv))
+    for seed in range(200):
+        V, Fp, Fq = data25(truth, sp, sq, 900 + seed)
+        fit = gecko.fit_steady_sliding(V, Fp, Fq, truth, fit_f_par1=not hold_f1,
+                                       sigma=(sp, sq) if known else None)
+        if fit.status != "converged":
+            continue
+        conv += 1
+        within += np.abs(fit.values - tv) <= 2 * fit.standard_errors
+    assert conv >= 180
+    assert np.all(within >= 0.9 * conv), within / conv
+
+
+def test_fit_sigma_known_and_rescaled():
+    truth = gecko.FIG6_PLASTIC
+    V, Fp, Fq = data25(truth, 5e-4, 5e-4, 4)
+    a = gecko.fit_steady_sliding(V, Fp, Fq, truth, sigma=(5e-4, np.full(25, 5e-4)))
+    b = gecko.fit_steady_sliding(V, Fp, Fq, truth, sigma=(5e-3, 5e-3), absolute_sigma=False)
+    c = gecko.fit_steady_sliding(V, Fp, Fq, truth)
+    assert a.status == b.status == c.status == "converged"
+    assert a.sigma_known and not b.sigma_known and not c.sigma_known
+    np.testing.assert_allclose(b.values, a.values, rtol=1e-7)
+    np.testing.assert_allclose(b.standard_errors, a.standard_errors * np.sqrt(a.chi2 / a.dof),
+                               rtol=1e-6)
+    np.testing.assert_allclose(c.standard_errors, b.standard_errors, rtol=1e-6)
+    assert a.chi2 == pytest.approx(a.rss / 5e-4 ** 2, rel=1e-10)
+    # Unequal weights change the estimates; a tenfold sigma on F_perp nearly removes it.
+    d = gecko.fit_steady_sliding(V, Fp, Fq, truth, sigma=(5e-4, 5e-2))
+    assert d.status == "converged" and not np.allclose(d.values, a.values, rtol=1e-6)
+
+
+def test_fit_overflowing_data_is_not_converged():
+    V, Fp, Fq = data25(gecko.FIG6_VISCOELASTIC, 0.0, 0.0, 1)
+    fit = gecko.fit_steady_sliding(V, 1e200 * Fp, 1e200 * Fq)
+    assert fit.status == "non_finite" and "overflow" in fit.reason
+
+
+def test_fit_not_identifiable_reports_directions_and_profiles():
+    truth = gecko.FIG6_VISCOELASTIC
+    seen = 0
+    for seed in range(40):
+        V, Fp, Fq = data25(truth, 5e-4, 5e-4, 300 + seed)
+        fit = gecko.fit_steady_sliding(V, Fp, Fq, truth)   # every offset free
+        assert fit.status in ("converged", "not_identifiable"), fit.reason
+        if fit.status == "not_identifiable":
+            seen += 1
+            assert "ln(V_star)" in fit.undetermined[0] and "ln(G0)" in fit.undetermined[0]
+            assert np.all(np.isfinite(fit.profile_lower) | np.isinf(fit.profile_lower))
+            assert fit.profile_lower[1] < truth.law.V_star
+    assert seen > 0
+
+
+def test_fit_parametric_law_and_profile():
+    truth = gecko.FIG6_VISCOELASTIC
+    V, Fp, Fq = data25(truth, 5e-4, 5e-4, 6)
+    law = gecko.ParametricLaw(lambda V, G0, V_star, n: G0 * (1 + (V / V_star) ** n),
+                              {"G0": 2e-14, "V_star": 2e-4, "n": 0.6})
+    a = gecko.fit_steady_sliding(V, Fp, Fq, truth.replace(law=law), fit_f_par1=False,
+                                 sigma=(5e-4, 5e-4), profile=True)
+    b = gecko.fit_steady_sliding(V, Fp, Fq, truth, fit_f_par1=False, sigma=(5e-4, 5e-4),
+                                 profile=True)
+    assert a.status == b.status == "converged"
+    assert a.names == b.names == ("G0", "V_star", "n", "f_perp1")
+    np.testing.assert_allclose(a.values, b.values, rtol=1e-6)
+    np.testing.assert_allclose(a.profile_lower, b.profile_lower, rtol=1e-4)
+    assert set(a.model.law.params) == {"G0", "V_star", "n"}
+    assert np.all(b.profile_lower < b.values) and np.all(b.values < b.profile_upper)
+    # 95 % profile intervals are about 1.96 times wider than the 68 % ones.
+    c = gecko.fit_steady_sliding(V, Fp, Fq, truth, fit_f_par1=False, sigma=(5e-4, 5e-4),
+                                 profile=True, profile_level=0.95)
+    np.testing.assert_allclose((c.profile_upper - c.profile_lower)
+                               / (b.profile_upper - b.profile_lower), 1.96, rtol=0.1)
+    # The fitted law works in steady_sliding.
+    r = gecko.steady_sliding(V, a.model)
+    assert np.all(np.isfinite(r.F_par))
+
+
+def test_fit_bad_sigma_and_options():
+    V, Fp, Fq = data25(gecko.FIG6_PLASTIC, 5e-4, 5e-4, 1)
+    with pytest.raises(ValueError, match=r"sigma_perp\[3\] = 0.0"):
+        s = np.full(25, 1e-3)
+        s[3] = 0
+        gecko.fit_steady_sliding(V, Fp, Fq, gecko.FIG6_PLASTIC, sigma=(1e-3, s))
+    with pytest.raises(ValueError, match="sigma_par must be a scalar or have one entry"):
+        gecko.fit_steady_sliding(V, Fp, Fq, gecko.FIG6_PLASTIC, sigma=(np.ones(3), 1.0))
+    with pytest.raises(ValueError, match="sigma must be a pair"):
+        gecko.fit_steady_sliding(V, Fp, Fq, gecko.FIG6_PLASTIC, sigma=1e-3)
+    with pytest.raises(ValueError, match="profile_level"):
+        gecko.fit_steady_sliding(V, Fp, Fq, gecko.FIG6_PLASTIC, profile_level=1.5)
+    law = gecko.ParametricLaw(lambda V, G0: G0 * np.ones_like(V), {"G0": -1.0})
+    with pytest.raises(ValueError, match="G0 = -1"):
+        gecko.fit_steady_sliding(V, Fp, Fq, gecko.FIG6_PLASTIC.replace(law=law))

@@ -252,6 +252,28 @@ def test_more_shapes_and_sensitivities():
     assert sens[4].y[3] == pytest.approx(fd, rel=1e-6)
 
 
+def test_seta_contact_contours():
+    """Contours of a: between l1 and l1 + l2 where the load has one equilibrium on the spatula; at
+    each Ft the contact state just above the critical line has a close to l1 + l2, and a falls
+    towards l1 as the load pushes (Ft = 0 row, where a is monotone in Fn)."""
+    r = run("seta_contact_contours")
+    d = r.data["seta"][0]["contact_contours"]
+    a, status, Fn, Ft = d["a"], d["status"], d["Fn"], d["Ft"]
+    ok = status == 0
+    assert ok.sum() > 50
+    assert np.all((a[ok] > 1.0) & (a[ok] <= 1.1))
+    assert np.all(np.isnan(a[~ok]))
+    row = a[0][ok[0]]  # Ft = 0: from the critical line (Fn)0 = 0.25 up to the joint line
+    assert np.all(np.diff(row) < 0)
+    assert Fn[ok[0]][0] == pytest.approx(0.25, abs=6.0 / Fn.size * 1.01)
+    seta = gecko.TwoLevelSeta()
+    line = seta.critical_line(Ft=Ft[:5])
+    st = seta.contact_state(line.Fn + 1e-9, Ft[:5])
+    assert np.all(np.abs(st.a - 1.1) < 1e-6)
+    (c,) = r.curves["seta_contact_contours"]
+    assert c.role == "contact_contours" and c.x.size == a.size
+
+
 def test_every_example_renders(tmp_path):
     """All example scenes draw (PNG + SVG) at low resolution; every plot gets its CSV."""
     pytest.importorskip("matplotlib")

@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-pd = pytest.importorskip("pandas", reason="sweeps need pandas (pip install gecko[sweep])")
+pd = pytest.importorskip("pandas", reason="sweeps need pandas (pip install \"gecko-adhesion[sweep]\")")
 
 import gecko  # noqa: E402
 from gecko.cli import main  # noqa: E402
@@ -213,18 +213,18 @@ def test_bad_optimize_tables_name_the_key(change, key, match):
     assert err.value.key == key
 
 
-def test_optimize_scene_passes_plain_values_to_design_optimize(monkeypatch, tmp_path):
+def test_optimize_scene_passes_plain_values_to_the_optimiser(monkeypatch, tmp_path):
     """The runner hands optimize_from_scene the validated table (expressions evaluated, starts
     scaled by the resolution) and writes what it returns."""
-    from gecko import design_optimize
+    from gecko import optimize
     seen = {}
-    real = design_optimize.optimize_from_scene
+    real = optimize.optimize_from_scene
 
     def spy(spec):
         seen.update(spec)
         return real(spec)
 
-    monkeypatch.setattr(design_optimize, "optimize_from_scene", spy)
+    monkeypatch.setattr(optimize, "optimize_from_scene", spy)
     s = optimize_scene(vary={"alpha2": [0.05, "pi/3 - 0.05"]}, fixed={"EA2": "25*2"}, starts=4, name="best")
     r = run_scene(s, tmp_path, resolution=0.5, progress=False, draw=False)
     assert seen == {"objective": "max_pull_off", "vary": {"alpha2": [0.05, math.pi / 3 - 0.05]},

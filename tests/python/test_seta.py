@@ -121,7 +121,7 @@ def test_traced_nodes_carry_a_status():
     with pytest.raises(ValueError, match="resolve_nodes"):
         s.critical_line(Ft=[1.0], resolve_nodes=False)
     # A line at forces ~100 whose Newton steps at 1e-12 hit their rounding floor at some nodes
-    # (bench/stress/traced_nodes.py): those nodes say so (status 1) and keep finite values.
+    # (validation/traced_nodes.py): those nodes say so (status 1) and keep finite values.
     s = gecko.TwoLevelSeta(EI1=3.4819510836166394, EI2=15.497815605161746, EA1=15.40193091295868,
                            EA2=3183.8725667297713, l2=0.02038078921865084, alpha1=0.5386040251416762,
                            alpha2=1.0098973821140953)

@@ -92,7 +92,7 @@ def test_reference_scene_characteristics():
     with open(os.path.join(DATA, "seta_reference_designs.csv")) as f:
         des = {r["design_id"]: r for r in csv.DictReader(f)}
     ref = des["0"]
-    assert abs(float(ref["Fn0"]) - 0.2499) < 1e-4              # models.md §1
+    assert abs(float(ref["Fn0"]) - 0.2499) < 1e-4              # docs/theory/two_level_seta.md
     assert abs(float(ref["min_Fn"]) + 2.80) < 0.01
     assert abs(float(ref["Ft_at_min"]) - 7.1) < 0.05
     assert float(ref["Ft_max"]) == 10.0

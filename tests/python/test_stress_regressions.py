@@ -1,8 +1,8 @@
-"""Worst cases found by the stress campaign (bench/stress, bench/results/stress.md), kept as
+"""Worst cases found by the stress campaign (validation, validation/results/stress.md), kept as
 regression tests (tests/data/stress_regressions.csv).
 
 kind = verify: the state at Ft is either solved (status 0) and agrees with the independent ODE
-shooting route (bench/stress/verify.py) to 1e-8 max(1,|Fn|) in Fn and 1e-8 in beta (where the
+shooting route (validation/verify.py) to 1e-8 max(1,|Fn|) in Fn and 1e-8 in beta (where the
 verifier is conclusive), or reported unsolved (status != 0) with NaN Fn and beta.
 kind = bounded_time: the solver must answer (any status) within 20 s.
 kind = not_reached: a design whose followed line crawls (step collapse) and used to report the Ft it
@@ -22,8 +22,7 @@ import numpy as np
 import pytest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "bench", "stress"))
-import campaign  # noqa: E402
+from validation import campaign  # the repository root is on pytest's pythonpath (pyproject.toml)
 
 gecko = pytest.importorskip("gecko")
 

@@ -1,23 +1,19 @@
-"""Short stress campaign (CI version of bench/stress/campaign.py, issue 6 "Evidence").
+"""Short stress campaign (CI version of validation/campaign.py, issue 6 "Evidence").
 
 Random two-level seta designs over the wide box of the campaign; every state gecko returns with
-status 0 is checked by the independent ODE shooting route of bench/stress/verify.py (no gecko code):
+status 0 is checked by the independent ODE shooting route of validation/verify.py (no gecko code):
 |Fn - Fn_verifier| <= 1e-8 max(1, |Fn|) and |beta - beta_verifier| <= 1e-8, with the verifier's own
 uncertainty shown to be far below that bound; every state with status != 0 has NaN Fn and beta.
-The full campaign and its numbers: bench/results/stress.md.
+The full campaign and its numbers: validation/results/stress.md.
 """
 import math
 import os
-import sys
 
 import numpy as np
 import pytest
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "..", "bench", "stress"))
-
-import campaign  # noqa: E402
-import verify  # noqa: E402
+from validation import campaign, verify  # the repository root is on pytest's pythonpath (pyproject.toml)
 
 gecko = pytest.importorskip("gecko")
 

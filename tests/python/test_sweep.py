@@ -6,7 +6,7 @@ import math
 import numpy as np
 import pytest
 
-pd = pytest.importorskip("pandas", reason="gecko.sweep needs pandas (pip install gecko[sweep])")
+pd = pytest.importorskip("pandas", reason="gecko.sweep needs pandas (pip install \"gecko-adhesion[sweep]\")")
 
 import gecko  # noqa: E402
 from gecko import _core, design_sweep  # noqa: E402
@@ -141,7 +141,7 @@ def test_interrupted_run_resumes_from_the_chunks_written(tmp_path, monkeypatch):
     with pytest.raises(Interrupted):
         gecko.sweep(d, outputs=outputs, chunk_size=5, out=tmp_path, progress=stop_after_two_chunks)
     key = design_sweep.sweep_key(design_sweep.design_matrix(d), outputs, 5)
-    chunks = sorted(p.name for p in (tmp_path / f"sweep-{key}").iterdir())
+    chunks = sorted(p.name for p in (tmp_path / f"sweep-{key}").iterdir() if p.suffix == ".parquet")
     assert chunks == ["chunk-000000.parquet", "chunk-000001.parquet"]
     assert not (tmp_path / f"sweep-{key}.parquet").exists()
 
@@ -184,7 +184,9 @@ def test_a_damaged_chunk_is_computed_again(tmp_path):
                     progress=lambda done, total: (_ for _ in ()).throw(Interrupted) if done >= 3 else None)
     key = design_sweep.sweep_key(design_sweep.design_matrix(d), ["fn0"], 3)
     (tmp_path / f"sweep-{key}" / "chunk-000000.parquet").write_bytes(b"not parquet")
-    t = gecko.sweep(d, outputs=["fn0"], chunk_size=3, out=tmp_path, progress=False)
+    from gecko._integrity import ResultFileWarning
+    with pytest.warns(ResultFileWarning, match="chunk-000000.parquet: content changed"):
+        t = gecko.sweep(d, outputs=["fn0"], chunk_size=3, out=tmp_path, progress=False)
     assert t.attrs["sweep"]["chunks_computed"] == 2
     bitwise_equal(t, gecko.sweep(d, outputs=["fn0"], progress=False))
 
@@ -234,7 +236,7 @@ def test_bad_design_tables():
 def test_without_pandas_the_error_names_the_extra(monkeypatch):
     import sys
     monkeypatch.setitem(sys.modules, "pandas", None)
-    with pytest.raises(ImportError, match=r"pip install gecko\[sweep\]"):
+    with pytest.raises(ImportError, match=r"pip install \"gecko-adhesion\[sweep\]\""):
         gecko.sweep(design_sweep.design_matrix({"EI1": [5.0]}), progress=False)
 
 

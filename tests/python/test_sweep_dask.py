@@ -6,9 +6,9 @@ import time
 
 import pytest
 
-pd = pytest.importorskip("pandas", reason="gecko.sweep needs pandas (pip install gecko[sweep])")
+pd = pytest.importorskip("pandas", reason="gecko.sweep needs pandas (pip install \"gecko-adhesion[sweep]\")")
 distributed = pytest.importorskip("distributed", reason="the Dask executor needs dask.distributed "
-                                                         "(pip install gecko[sweep])")
+                                                         "(pip install \"gecko-adhesion[dask]\")")
 
 import gecko  # noqa: E402
 

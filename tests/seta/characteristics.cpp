@@ -94,7 +94,7 @@ TEST_CASE("characteristics match the reference designs", "[seta][characteristics
 TEST_CASE("small-deformation formulas at the reference scene", "[seta][characteristics]") {
   const gecko::TwoLevelSeta<double> s;
   const auto c = gecko::characteristics(s);
-  // models.md: the linear theory gives (Fn)0 ~ 0.34 against the exact ~0.25.
+  // docs/theory/two_level_seta.md: the linear theory gives (Fn)0 ~ 0.34 against the exact ~0.25.
   CHECK(c.small.fn0 == Approx(0.3397).margin(2e-3));
   CHECK(c.fn0 == Approx(0.24990379377720597).epsilon(1e-13));
   CHECK(c.small.non_sticky);

@@ -1,6 +1,6 @@
 // Tests of the end of the critical line (gecko/seta/critical_line.hpp, the landing of
 // gecko/seta/detail/continuation.hpp's follow_line on the end of its range) and of the line at
-// Ft near and at (Ft)max = sqrt(2 EA2 w) (models.md §1: the line ends there, with Fn - Fn_end
+// Ft near and at (Ft)max = sqrt(2 EA2 w) (docs/theory/two_level_seta.md: the line ends there, with Fn - Fn_end
 // proportional to sqrt((Ft)max - Ft)).
 //
 // Regressions (all found by the design optimiser's sweeps):

@@ -1,5 +1,5 @@
 // Test helper: an independent route to the two-level seta's critical state — ODE shooting of the
-// governing equations (models.md §1, paper eqs 1-5) with classical RK4 in long double, no first
+// governing equations (docs/theory/two_level_seta.md, paper eqs 1-5) with classical RK4 in long double, no first
 // integrals and no elliptic integrals. From the contact edge (theta2 = pi/2,
 // theta2' = +sqrt(2 (w - Ft^2/(2 EA2)) / EI2)) integrate back over the spatula to the joint, apply
 // the joint conditions, integrate back over the beam to the base. At a true critical state

@@ -1,5 +1,5 @@
 // gecko/beam/castigliano.hpp — compliance of a planar curved beam of any centreline z(x), by
-// Castigliano's theorem (models.md §2 "Curved-beam force law"; paper 000 eqs 1, 11 and
+// Castigliano's theorem (docs/theory/frictional_adhesion.md "Curved-beam force law"; paper 000 eqs 1, 11 and
 // Appendix 1, eqs A1.1–A1.5).
 //
 // The beam is clamped at x = L and loaded at its tip x = 0 by (F_par, F_perp). With the paper's

@@ -1,5 +1,5 @@
 // gecko/beam/parabolic.hpp — closed-form compliance and rigidity of the parabolic beam
-// z = sqrt(L x)/2 (paper 000 Appendix 1, eq A1.5; models.md §2 with the corrected sign of a11):
+// z = sqrt(L x)/2 (paper 000 Appendix 1, eq A1.5; docs/theory/frictional_adhesion.md with the corrected sign of a11):
 //     C = (L^3 / 2EI) [[a11, a12], [a12, a22]],
 //     a11 = 33 sqrt17/512 - ln(4 + sqrt17)/2048,   a12 = (391 sqrt17 + 1)/3840,
 //     a22 = 2077 sqrt17/12288 + ln(4 + sqrt17)/16384.

@@ -1,5 +1,5 @@
 // gecko/beam/rigidity.hpp — rigidity K = C^-1 of a tip compliance C, and the checks a rigidity
-// matrix must pass (models.md §2: f = K d with K symmetric, K_par_par > 0, K_perp_perp > 0,
+// matrix must pass (docs/theory/frictional_adhesion.md: f = K d with K symmetric, K_par_par > 0, K_perp_perp > 0,
 // K_par_perp = K_perp_par < 0; paper 000 eq 1).
 #pragma once
 

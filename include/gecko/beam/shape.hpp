@@ -1,6 +1,6 @@
 // gecko/beam/shape.hpp — centreline shapes z(x) of a planar curved beam, and their slope.
 //
-// models.md §2 "Curved-beam force law": the beam's centreline is z(x) for x in [0, L], the tip
+// docs/theory/frictional_adhesion.md "Curved-beam force law": the beam's centreline is z(x) for x in [0, L], the tip
 // (where the force acts) at x = 0 and the clamp at x = L. Castigliano's integrals need z and the
 // slope z' = dz/dx (through ds = sqrt(1 + z'^2) dx). A *shape* is
 //   * any callable z(x), whose slope gecko takes by the complex step

@@ -1,6 +1,6 @@
 // gecko/beam/tanh_sinh.hpp — tanh-sinh (double-exponential) quadrature on (0, 1).
 //
-// Used by castigliano.hpp for the compliance integrals of models.md §2 (Appendix 1 of paper
+// Used by castigliano.hpp for the compliance integrals of docs/theory/frictional_adhesion.md (Appendix 1 of paper
 // 000). After the substitution x = L t^2 a tip with ds/dx ~ x^-1/2 (the parabola) gives a smooth
 // integrand in t, where tanh-sinh converges double-exponentially; any remaining algebraic
 // endpoint singularity (a shape with z' ~ x^-2/3, say) is still integrated to full accuracy,

@@ -1,5 +1,5 @@
 // gecko/friction/detachment.hpp — rate-dependent detachment of a spatula (paper 000 eqs 4, 7, 8,
-// A2.6; models.md §2 "Rate-dependent detachment" and "Spatula stick-slip").
+// A2.6; docs/theory/frictional_adhesion.md "Rate-dependent detachment" and "Spatula stick-slip").
 //
 //   viscoelastic (eq 7):  G(V) = G0 (1 + (V/V*)^n)
 //   plastic / Eyring (eq 8): G(V) = G0 asinh(V/V*)
@@ -97,7 +97,7 @@ T detachment_stretch(T K_par_par, T f_par1, T G, const Policy& = Policy()) {
 
 // Eq 4: resonant frequency of a cantilevered spatula of diameter D and length L. For D = 100 nm,
 // L = 1 um, E = 1.5 GPa, rho = 1000 kg/m^3 this gives 17.1 MHz; the paper prints 34.3 MHz, twice
-// what its own formula gives (models.md §2), so its t_off ~ 0.03 us is really ~ 0.06 us.
+// what its own formula gives (docs/theory/frictional_adhesion.md), so its t_off ~ 0.03 us is really ~ 0.06 us.
 template <class T, class Policy = policies::default_policy>
 T resonant_frequency(T D, T L, T E, T rho, const Policy& = Policy()) {
   using std::sqrt;

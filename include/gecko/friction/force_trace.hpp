@@ -1,5 +1,5 @@
 // gecko/friction/force_trace.hpp — tip force f(t) = K d(t) along a displacement path
-// (paper 000 eqs 1–3 and 11–13, Figs 4 and 8; models.md §2). Arrays ready to plot.
+// (paper 000 eqs 1–3 and 11–13, Figs 4 and 8; docs/theory/frictional_adhesion.md). Arrays ready to plot.
 #pragma once
 
 #include <Eigen/Core>

@@ -1,6 +1,6 @@
 // gecko/friction/path.hpp — piecewise-linear displacement paths (d_par, d_perp)(t) and the
 // paper's two: the spatula of Fig 4 (paper 000 eq 3) and the seta loop of Fig 8 (eq 13);
-// and the paper's illustrative rigidity K = [[5, -3], [-3, 2]] (eqs 2 and 12). models.md §2.
+// and the paper's illustrative rigidity K = [[5, -3], [-3, 2]] (eqs 2 and 12). docs/theory/frictional_adhesion.md.
 #pragma once
 
 #include <Eigen/Core>

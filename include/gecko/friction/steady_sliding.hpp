@@ -1,5 +1,5 @@
 // gecko/friction/steady_sliding.hpp — steady sliding forces of N spatulae out of phase
-// (paper 000 eqs 5, 6, 9, 10 and A2.7–A2.8; models.md §2 "Rate-dependent detachment").
+// (paper 000 eqs 5, 6, 9, 10 and A2.7–A2.8; docs/theory/frictional_adhesion.md "Rate-dependent detachment").
 //
 // A spatula re-sticks with lateral force f_par1 and normal force f_perp1, is stretched at the
 // drag velocity V until the stored energy reaches G(V) (stretch dd, detachment_stretch), stays

@@ -1,4 +1,4 @@
-// gecko/peel/kendall.hpp — Kendall's peel line of an extensible film (models.md §1, "Classical
+// gecko/peel/kendall.hpp — Kendall's peel line of an extensible film (docs/theory/two_level_seta.md, "Classical
 // peel lines", paper eq 17):
 //     sqrt(Fn^2 + Ft^2) + (Fn^2 + Ft^2)/(2 EA) - Ft - w = 0.
 // Solved for the (tensile, Fn <= 0) normal force at a given shear Ft: with N = |F|,

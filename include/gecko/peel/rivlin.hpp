@@ -1,4 +1,4 @@
-// gecko/peel/rivlin.hpp — Rivlin's peel line of an inextensible film (models.md §1, paper eq 17):
+// gecko/peel/rivlin.hpp — Rivlin's peel line of an inextensible film (docs/theory/two_level_seta.md, paper eq 17):
 //     sqrt(Fn^2 + Ft^2) - Ft - w = 0   =>   Fn = -sqrt(w^2 + 2 w Ft)   (tensile root),
 // defined for Ft >= -w/2.
 #pragma once

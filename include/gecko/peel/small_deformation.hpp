@@ -1,5 +1,5 @@
 // gecko/peel/small_deformation.hpp — the small-deformation (linear) theory of the two-level seta
-// (models.md §1, "Small-deformation approximations", paper eqs 6-7 and 18-22). Qualitative by the
+// (docs/theory/two_level_seta.md, "Small-deformation approximations", paper eqs 6-7 and 18-22). Qualitative by the
 // paper's own account (reference scene: (Fn)0 = 0.34 here against the exact 0.2499); the exact
 // counterparts are in gecko/seta/characteristics.hpp.
 //   Meq = sqrt(2 EI2 w), Delta = pi/2 - (alpha1 + alpha2)

@@ -1,5 +1,5 @@
 // gecko/seta/characteristics.hpp — the characteristic quantities of a two-level seta
-// (models.md §1, "Critical line of adhesion" and "Small-deformation approximations"):
+// (docs/theory/two_level_seta.md, "Critical line of adhesion" and "Small-deformation approximations"):
 //   (Fn)0           critical Fn at Ft = 0 (> 0: not sticky at rest, like a gecko)
 //   slope k         dFn/dFt at Ft = 0, the exact tangent of the line (the linear theory's k, eq 21,
 //                   is the slope of its straight line; both are reported)

@@ -1,7 +1,7 @@
 // gecko/seta/characteristics_batch.hpp — the characteristic quantities of many designs, each
 // solved only as deep as the caller needs (the design sweep, python/gecko/design_sweep.py).
 //
-// models.md §1, "Critical line of adhesion" (the characteristic quantities) and
+// docs/theory/two_level_seta.md, "Critical line of adhesion" (the characteristic quantities) and
 // "Small-deformation approximations" (paper eqs 7, 18-22). Each depth adds to the one before:
 //   closed_forms    (Ft)max = sqrt(2 EA2 w) and the small-deformation (Fn)0, k, contact length
 //                   and non-sticky criterion: no solver at all;

@@ -1,5 +1,5 @@
 // gecko/seta/critical_equations.hpp — the critical-state equations as a public function: residual
-// and exact Jacobian at a given state (models.md §1; the formulation of
+// and exact Jacobian at a given state (docs/theory/two_level_seta.md; the formulation of
 // gecko/seta/critical_residual.hpp). For users who drive their own solver, and for tests.
 //
 // Unknowns: (Fn, theta_joint = beta, theta_rate_joint = theta2'(l1), theta_rate_base = theta1'(0));

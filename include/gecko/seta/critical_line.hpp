@@ -1,10 +1,10 @@
 // gecko/seta/critical_line.hpp — the critical line of adhesion of the two-level seta.
 //
-// models.md §1 "Critical line of adhesion": the curve of critical (Fn, Ft), followed from the
+// docs/theory/two_level_seta.md "Critical line of adhesion": the curve of critical (Fn, Ft), followed from the
 // natural state at Ft = 0 by pseudo-arclength continuation (gecko/seta/detail/continuation.hpp)
 // through folds, up to (Ft)max = sqrt(2 EA2 w) or to where it ends (reported in `end`).
 // The natural state needs no guess: it is reached by homotopy from the small-deformation limit
-// (models.md eq 18), scaling the angle deficit pi/2 - alpha1 - alpha2 by lambda and w by
+// (docs/theory/two_level_seta.md, paper 001 eq 18), scaling the angle deficit pi/2 - alpha1 - alpha2 by lambda and w by
 // lambda^2 (the linear theory is exact as lambda -> 0), lambda = 0.02 -> 1.
 // critical_line_at gives the line at requested Ft values: the first crossing of each Ft along
 // the line from Ft = 0 (negative Ft: along the line followed from Ft = 0 towards negative Ft),

@@ -1,6 +1,6 @@
 // gecko/seta/critical_residual.hpp — the equations of the critical state of the two-level seta.
 //
-// models.md §1 ("First integrals", "Lengths", "Critical line of adhesion"; paper eqs 8-15): at
+// docs/theory/two_level_seta.md ("First integrals", "Lengths", "Critical line of adhesion"; paper eqs 8-15): at
 // the critical state the non-contact length is a = l1 + l2, and for a given Ft the two length
 // equations fix (Fn, beta = theta2(l1)). A monotone-only formulation in (Fn, beta) has square-root
 // branch points wherever theta' vanishes at a segment end (a turning point entering or leaving a

@@ -1,6 +1,6 @@
 // gecko/seta/elastica_segment.hpp — the length of one elastica segment in Carlson form.
 //
-// models.md §1, "First integrals" and "Lengths" (paper eqs 8-15). A segment with bending stiffness
+// docs/theory/two_level_seta.md, "First integrals" and "Lengths" (paper eqs 8-15). A segment with bending stiffness
 // EI, axial stiffness EA (c = 1/EA, c = 0 for EA = infinity), loaded by (Fn, Ft), obeys
 //     1/2 EI theta'^2 = R(u) = M - N u - c N^2 u^2 / 2,   u = sin(psi),  psi = theta - phi,
 // with N = |F| and phi the force direction. Its length between two states (psi, sign of theta') is

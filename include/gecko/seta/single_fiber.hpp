@@ -1,4 +1,4 @@
-// gecko/seta/single_fiber.hpp — the single-level fiber of He et al. 2013 (models.md §1,
+// gecko/seta/single_fiber.hpp — the single-level fiber of He et al. 2013 (docs/theory/two_level_seta.md,
 // "Single-level fiber", used in Fig 4): one segment of length l, EI, EA, base angle alpha, with
 // M = Ft + w and l = int_alpha^{pi/2} dtheta / theta'(theta) at the critical state.
 // Same machinery as the two-level seta: Carlson forms (gecko/seta/elastica_segment.hpp), unknowns

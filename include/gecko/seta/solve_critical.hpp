@@ -1,6 +1,6 @@
 // gecko/seta/solve_critical.hpp — one critical state of the two-level seta by Newton.
 //
-// models.md §1 "Critical line of adhesion": for a given Ft, solve the length equations (with the
+// docs/theory/two_level_seta.md "Critical line of adhesion": for a given Ft, solve the length equations (with the
 // first-integral identities of gecko/seta/critical_residual.hpp) for Fn and beta = theta2(l1),
 // from a guess. Newton with the exact Jacobian (dual numbers; R_F's gradient is -R_D/6) and
 // affine-invariant damping (gecko/seta/detail/newton.hpp). After convergence the Carlson plan of

@@ -1,5 +1,5 @@
 """The ``[sweep]`` and ``[optimize]`` sections of a scene: many designs as one table, and a design
-optimisation (gecko.design_sweep, gecko.design_optimize).
+optimisation (gecko.design_sweep, gecko.optimize).
 
     [sweep]                              # characteristics of many two-level seta designs
     designs = "sobol"                    # "grid", "random", "sobol", "latin_hypercube" or "table"
@@ -14,7 +14,7 @@ optimisation (gecko.design_sweep, gecko.design_optimize).
     [sweep.parameters]                   # fixed values of the other fields (default: reference)
     EA2 = 100
 
-    [optimize]                           # gecko.design_optimize.optimize_from_scene's table
+    [optimize]                           # gecko.optimize.optimize_from_scene's table
     objective = "max_pull_off"
     vary = { alpha2 = [0, "pi/3"], "EI2/EI1" = [0.05, 1] }
     constraints = { not_sticky = true }
@@ -32,13 +32,14 @@ import numpy as np
 
 from . import expr
 from .errors import SceneError
+from .grids import eval_grid
 from .models import _check_keys, _int_in, _tname
 
 SWEEP_KEYS = ("designs", "n", "seed", "bounds", "grid", "table", "parameters", "outputs", "chunk_size",
               "executor", "connect_timeout", "errors", "format", "name", "plot")
 SWEEP_DESIGNS = ("grid", "random", "sobol", "latin_hypercube", "table")
 SWEEP_PLOT_KEYS = ("x", "y", "color", "xscale", "yscale")
-# the [optimize] table is gecko.design_optimize.optimize_from_scene's; "name" is the scene's own
+# the [optimize] table is gecko.optimize.optimize_from_scene's; "name" is the scene's own
 OPTIMIZE_KEYS = ("objective", "ft", "vary", "constraints", "starts", "seed", "fixed", "method", "maxiter",
                  "include_base", "quadrature_nodes", "name")
 OPTIMIZE_DERIVED = ("EI2/EI1", "l2/l1", "alpha1+alpha2")
@@ -88,7 +89,8 @@ class SweepSpec:
         if self.designs == "grid":
             return ds.design_grid(self.grid, fixed=self.fixed)
         if self.designs == "table":
-            import pandas as pd
+            from .._optional import require
+            pd = require("pandas", "a [sweep] design table", "sweep")
             t = pd.read_parquet(self.table) if self.table.endswith(".parquet") else pd.read_csv(self.table)
             for k, v in self.fixed.items():
                 if k not in t.columns:
@@ -101,7 +103,7 @@ class SweepSpec:
 
 @dataclass
 class OptimizeSpec:
-    table: Dict[str, Any]      # plain values, as gecko.design_optimize.optimize_from_scene takes it
+    table: Dict[str, Any]      # plain values, as gecko.optimize.optimize_from_scene takes it
     name: str = "optimum"
 
     def describe(self) -> str:
@@ -121,7 +123,8 @@ def _name(v, key: str, default: str) -> str:
         return default
     if not isinstance(v, str) or not v or v[0] == "." or not all(c.isalnum() or c in "-_." for c in v):
         raise SceneError(f"{v!r} is not allowed: need a file-name stem of letters, digits, '-', '_', '.'", key=key)
-    return v
+    from .limits import check_name
+    return check_name(v, key)
 
 
 def _fixed(table, key: str, allowed) -> Dict[str, float]:
@@ -136,7 +139,8 @@ def _fixed(table, key: str, allowed) -> Dict[str, float]:
 
 
 def parse_sweep(t, res: float, base_dir: Optional[str]) -> SweepSpec:
-    from ..design_sweep import DEFAULT_SWEEP_OUTPUTS, FIELDS, SWEEP_OUTPUTS, _parse_bounds
+    from ..design_sweep import DEFAULT_SWEEP_OUTPUTS, SWEEP_OUTPUTS
+    from ..designs import FIELDS, parse_bounds
     key = "sweep"
     if not isinstance(t, dict):
         raise SceneError(f"need a table; got {_tname(t)}", key=key)
@@ -176,12 +180,11 @@ def parse_sweep(t, res: float, base_dir: Optional[str]) -> SweepSpec:
                 raise SceneError(f"{scale!r} is not allowed: the third entry is 'linear' or 'log'", key=f"{k}[2]")
             lo, hi = _num(v[0], f"{k}[0]"), _num(v[1], f"{k}[1]")
             try:
-                _parse_bounds({name: (lo, hi, scale)})
+                parse_bounds({name: (lo, hi, scale)})
             except ValueError as exc:
                 raise SceneError(str(exc), key=k) from None
             spec.bounds[name] = (lo, hi, scale)
     if "grid" in t:
-        from .schema import eval_grid
         g = t["grid"]
         if not isinstance(g, dict) or not g:
             raise SceneError("need a table {name = values}: a list, {range = [a, b], num = N} or {logrange = ...}",
@@ -251,8 +254,8 @@ def parse_sweep(t, res: float, base_dir: Optional[str]) -> SweepSpec:
 
 def parse_optimize(t, res: float) -> OptimizeSpec:
     """Checks the [optimize] table (keys, types, ranges) and returns it with plain values: numbers
-    evaluated, ``starts`` scaled by the resolution; gecko.design_optimize runs it."""
-    from ..design_sweep import FIELDS, _parse_bounds
+    evaluated, ``starts`` scaled by the resolution; gecko.optimize runs it."""
+    from ..designs import FIELDS, parse_bounds
     key = "optimize"
     if not isinstance(t, dict):
         raise SceneError(f"need a table; got {_tname(t)}", key=key)
@@ -260,7 +263,7 @@ def parse_optimize(t, res: float) -> OptimizeSpec:
     _check_keys(t, OPTIMIZE_KEYS + params, key)
     out: Dict[str, Any] = {}
     obj = t.get("objective")
-    from ..design_optimize import OBJECTIVES as objectives
+    from ..optimize import OBJECTIVES as objectives
     if obj not in objectives:
         raise SceneError(("missing key 'objective'" if obj is None else f"{obj!r} is not allowed")
                          + "; allowed: " + ", ".join(map(repr, objectives)), key=f"{key}.objective")
@@ -288,7 +291,7 @@ def parse_optimize(t, res: float) -> OptimizeSpec:
         lo, hi = _num(v[0], f"{k}[0]"), _num(v[1], f"{k}[1]")
         if name in FIELDS:
             try:
-                _parse_bounds({name: (lo, hi)})
+                parse_bounds({name: (lo, hi)})
             except ValueError as exc:
                 raise SceneError(str(exc), key=k) from None
         elif not (math.isfinite(lo) and math.isfinite(hi) and lo < hi and lo >= 0):

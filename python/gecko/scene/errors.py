@@ -7,9 +7,31 @@ from typing import Optional
 class SceneError(ValueError):
     """A scene that cannot be read, is malformed, or asks for something out of range.
 
-    ``str(err)`` reads ``FILE: KEY.PATH: message`` so a user can go straight to the line.
-    ``source`` (the file, or ``<dict>``), ``key`` (dotted key path, e.g. ``study[0].parameters.EI1``)
-    and ``reason`` are kept as attributes for programs.
+    ``str(err)`` reads ``FILE: KEY.PATH: message``, so a user can go straight to the line. A
+    subclass of :class:`ValueError`.
+
+    Parameters
+    ----------
+    reason : str
+        What is wrong and what is allowed.
+    key : str, optional
+        Dotted key path, e.g. ``study[0].parameters.EI1``.
+    source : str, optional
+        The file, or ``<dict>``.
+
+    Attributes
+    ----------
+    reason, key, source : str
+        As given, for programs.
+
+    Examples
+    --------
+    >>> from gecko.scene import SceneError
+    >>> err = SceneError("need a number", key="study[0].parameters.EI1", source="a.toml")
+    >>> str(err)
+    'a.toml: study[0].parameters.EI1: need a number'
+    >>> isinstance(err, ValueError)
+    True
     """
 
     def __init__(self, reason: str, *, key: str = "", source: Optional[str] = None):

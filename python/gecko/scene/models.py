@@ -2,7 +2,7 @@
 
 A model declares its parameters (:class:`Param`: default, kind, allowed range) and its outputs
 (name -> parser of the output's table). Nothing here computes: the planner decides which kernels
-run, the runner runs them. Defaults are the papers' reference values (models.md §1 reference
+run, the runner runs them. Defaults are the papers' reference values (docs/theory/two_level_seta.md reference
 scene; §2 Figs 4, 6, 8).
 """
 from __future__ import annotations
@@ -71,21 +71,32 @@ class Model:
 
 PI6 = math.pi / 6
 
-SETA_PARAMS = (
-    Param("EI1", 5.0, "bending stiffness of the beam (level 1)", check=_positive, symbol="EI₁"),
-    Param("EI2", 2.0, "bending stiffness of the spatula (level 2)", check=_positive, symbol="EI₂"),
-    Param("EA1", math.inf, "axial stiffness of the beam (inf: inextensible)", check=_positive_or_inf,
-          symbol="EA₁"),
-    Param("EA2", 50.0, "axial stiffness of the spatula (inf: inextensible)", check=_positive_or_inf,
-          symbol="EA₂"),
-    Param("l1", 1.0, "length of the beam", check=_positive, symbol="l₁"),
-    Param("l2", 0.1, "length of the spatula", check=_positive, symbol="l₂"),
-    Param("alpha1", PI6, "base angle of the beam from the substrate normal", check=_open_right_angle,
-          symbol="α₁"),
-    Param("alpha2", PI6, "kink of the spatula at the joint (alpha1 + alpha2 < pi/2)",
-          check=_half_open_right_angle, symbol="α₂"),
-    Param("w", 1.0, "work of adhesion per unit length", check=_positive, symbol="w"),
-)
+def _seta_check(name: str):
+    """The scene's range check of a design field, from its admissible range in C++."""
+    from ..seta import SetaDesign
+    lo, hi, lo_incl, inf_ok, _ = SetaDesign.domain[name]
+    if inf_ok:
+        return _positive_or_inf
+    if hi == math.inf:
+        return _nonnegative if lo_incl else _positive
+    return _half_open_right_angle if lo_incl else _open_right_angle
+
+
+def _unicode_symbol(name: str) -> str:
+    """How a legend writes a design field: EI1 -> EI₁, alpha2 -> α₂."""
+    sub = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+    return name.replace("alpha", "α").translate(sub)
+
+
+def _seta_params() -> Tuple[Param, ...]:
+    from ..designs import DEFAULTS, FIELDS
+    from ..seta import SetaDesign
+    return tuple(Param(f, DEFAULTS[f], SetaDesign.descriptions[f], check=_seta_check(f),
+                       symbol=_unicode_symbol(f)) for f in FIELDS)
+
+
+#: the two-level seta's parameters: the bound C++ design type's fields, defaults, ranges and texts
+SETA_PARAMS = _seta_params()
 
 #: characteristic quantities of the two-level seta; "small_*" are the linear theory (eqs 7, 18-22)
 SETA_EXACT = ("fn0", "slope_k", "abs_slope_k", "inv_abs_k", "max_pull_off", "ft_at_max_pull_off", "min_fn",
@@ -98,7 +109,7 @@ CHARACTERISTIC_LABELS = {
     "small_fn0": "$(\\bar F_n)_0$, small deformation (eq 19)",
     "slope_k": "slope $k = d\\bar F_n/d\\bar F_t$",
     "small_slope_k": "slope $k$, small deformation (eq 18)",
-    # k = dFn/dFt (models.md). The paper's plots have Fn horizontal and call the slope there
+    # k = dFn/dFt (docs/theory/two_level_seta.md). The paper's plots have Fn horizontal and call the slope there
     # k_paper = dFt/dFn, so the paper's "1/|k|" (Fig 5b) is |dFn/dFt| = abs_slope_k.
     "abs_slope_k": "$|d\\bar F_n/d\\bar F_t|$ (the paper's $1/|k|$)",
     "small_abs_slope_k": "$|d\\bar F_n/d\\bar F_t|$, small deformation (eq 21)",
@@ -117,6 +128,10 @@ CHARACTERISTIC_LABELS = {
 
 DEFAULT_K = ((5.0, -3.0), (-3.0, 2.0))
 
+#: default load grid of the contact_contours output (Fn x Ft)
+CONTACT_GRID_FN = {"range": [-4.0, 2.0], "num": 121}
+CONTACT_GRID_FT = {"range": [0.0, "0.99*ft_end"], "num": 100}
+
 MODELS: Dict[str, Model] = {}
 
 
@@ -126,8 +141,8 @@ def _add(m: Model) -> None:
 
 _add(Model(
     "two_level_seta", "two-level seta", SETA_PARAMS,
-    ("critical_line", "characteristics", "shapes", "sensitivities", "linear_line", "csv"),
-    "Two-level seta of directional adhesion (models.md §1); defaults: the paper's reference scene.",
+    ("critical_line", "characteristics", "shapes", "sensitivities", "linear_line", "contact_contours", "csv"),
+    "Two-level seta of directional adhesion (docs/theory/two_level_seta.md); defaults: the paper's reference scene.",
     characteristics=SETA_EXACT + SETA_SMALL))
 _add(Model(
     "single_fiber", "single-level fiber",
@@ -137,7 +152,7 @@ _add(Model(
      Param("alpha", math.pi / 3, "base angle from the substrate normal", check=_open_right_angle, symbol="α"),
      Param("w", 1.0, "work of adhesion", check=_positive, symbol="w")),
     ("critical_line", "characteristics", "csv"),
-    "Single-level fiber of He et al. 2013 (models.md §1, Fig 4).", characteristics=("fn0",)))
+    "Single-level fiber of He et al. 2013 (docs/theory/two_level_seta.md, Fig 4).", characteristics=("fn0",)))
 _add(Model(
     "kendall", "Kendall model",
     (Param("EA", 50.0, "axial stiffness of the film (inf: Rivlin)", check=_positive_or_inf, symbol="EA/w"),
@@ -273,6 +288,24 @@ def parse_output(model: Model, name: str, value, key: str) -> Optional[OutputSpe
         check_grid(ft, f"{key}.Ft")
         pts = _int_in(table.get("points", 101), f"{key}.points", 3, 100000)
         return OutputSpec(name, {"grid": ft, "points": pts, "grid_key": "Ft"})
+    if name == "contact_contours":
+        # The forward problem on a grid of loads: a (non-contact length) at every (Fn, Ft).
+        table = _bool_or_table(value, key, ["Fn", "Ft", "levels"])
+        if table is None:
+            return None
+        fn = table.get("Fn", CONTACT_GRID_FN)
+        ft = table.get("Ft", CONTACT_GRID_FT)
+        check_grid(fn, f"{key}.Fn")
+        check_grid(ft, f"{key}.Ft")
+        levels = table.get("levels", 9)
+        if isinstance(levels, list):
+            if not levels or not all(isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
+                                     for v in levels):
+                raise SceneError("need a list of finite numbers (values of a/l1) or an integer", key=f"{key}.levels")
+            levels = sorted(float(v) for v in levels)
+        else:
+            levels = _int_in(levels, f"{key}.levels", 1, 50)
+        return OutputSpec(name, {"Fn": fn, "Ft": ft, "levels": levels})
     if name == "force_trace":
         table = _bool_or_table(value, key, ["samples_per_segment"])
         if table is None:

@@ -37,6 +37,26 @@ class Step:
 
 @dataclass
 class Plan:
+    """What a scene will compute: the scene and its steps (:func:`plan_scene`).
+
+    Attributes
+    ----------
+    scene : Scene
+        The scene planned.
+    steps : list of Step
+        One kernel applied to some designs of a study each, in order.
+
+    Examples
+    --------
+    >>> from gecko.scene import load_scene, plan_scene
+    >>> plan = plan_scene(load_scene({"study": [{"name": "k", "model": "kendall",
+    ...                                           "outputs": {"characteristics": True}}]}))
+    >>> print(plan.describe())  # doctest: +ELLIPSIS
+    scene: <dict>  (resolution 1)
+      study 'k': kendall, 1 design(s)
+        - ...
+      no plots: matplotlib is not imported
+    """
     scene: Scene
     steps: List[Step]
 
@@ -79,6 +99,30 @@ def _kernel_kind(study: Study) -> str:
 
 
 def plan_scene(scene: Scene) -> Plan:
+    """Decide which kernels a scene needs, from the outputs it asks for, and nothing more.
+
+    No shapes unless shapes are asked for, no critical line when only (Fn)0 is, the inextensible
+    kernel when EA is infinite; :meth:`Plan.describe` says what was chosen and why.
+
+    Parameters
+    ----------
+    scene : Scene
+        A validated scene (:func:`gecko.scene.load_scene`).
+
+    Returns
+    -------
+    Plan
+        The steps, one kernel applied to some designs of a study each.
+
+    Examples
+    --------
+    >>> from gecko.scene import load_scene, plan_scene
+    >>> scene = {"title": "two angles", "study": [{"name": "seta", "model": "two_level_seta",
+    ...          "parameters": {"alpha2": [0.3, 0.5]}, "outputs": {"characteristics": ["fn0"]}}]}
+    >>> plan = plan_scene(load_scene(scene))
+    >>> plan.kernels("seta"), plan.needs_matplotlib
+    (['fn0'], False)
+    """
     steps: List[Step] = []
     for st in scene.studies:
         pts = [p.index for p in st.points]
@@ -108,6 +152,10 @@ def plan_scene(scene: Scene) -> Plan:
                 steps.append(Step(st.name, "shapes", pts,
                                   f"critical states at the requested Ft, then RK4 of the elastica in C++ "
                                   f"({o['points'] - 1} steps per segment)"))
+            if "contact_contours" in out:
+                steps.append(Step(st.name, "contact_contours", pts,
+                                  "the forward problem (contact length a) on the Fn x Ft grid, one C++ call per "
+                                  f"design ({kk} kernel)"))
             if "sensitivities" in out:
                 steps.append(Step(st.name, "sensitivities", pts,
                                   "dFn/d(design) by the implicit function theorem (dual numbers in C++)"))

@@ -10,7 +10,10 @@ from .models import CHARACTERISTIC_LABELS
 
 
 def _figure(size):
-    from matplotlib.figure import Figure  # no pyplot: no GUI backend, no global state
+    from .._optional import require
+    # no pyplot: no GUI backend, no global state
+    Figure = require("matplotlib.figure", "drawing a scene's plots (or run it without figures)",
+                     "plot").Figure
     return Figure(figsize=size, layout="constrained") if _has_layout() else Figure(figsize=size)
 
 
@@ -74,6 +77,17 @@ def render_plot(scene, plot, curves, folder: Path, formats: Sequence[str]) -> Li
     elif kind == "force_space":
         for c in curves:
             gp.force_space(ax, c.x, c.y, arrows=opts.get("arrows", True), label=c.label, linewidth=1.6)
+    elif kind == "contact_contours":
+        many = len(curves) > 1
+        for i, c in enumerate(curves):
+            shape = c.meta["shape"]
+            gp.contact_contours(ax, c.x.reshape(shape), c.y.reshape(shape), c.meta["columns"]["a_over_l1"].reshape(shape),
+                                status=c.meta["columns"]["status"].reshape(shape), levels=c.meta["levels"],
+                                l2_over_l1=c.meta["l2"] / c.meta["l1"], filled=not many,
+                                color=f"C{i}" if many else None, label=c.label or None,
+                                colorbar=None if many else fig)
+        ax.set_xlabel(gp.FN_LABEL)
+        ax.set_ylabel(gp.FT_LABEL)
     elif kind == "steady_sliding":
         labels = {}
         for c in curves:
@@ -131,7 +145,8 @@ def render_sweep(scene, table, folder: Path, formats: Sequence[str]) -> List[str
     coloured by a third column when asked."""
     spec = scene.sweep
     p = spec.plot
-    ok = table[table["status"] == 0]
+    from ..seta import CriticalStatus
+    ok = table[table["status"] == CriticalStatus.converged]
     fig = _figure((6.4, 4.8))
     ax = fig.add_subplot(1, 1, 1)
     kw = dict(s=6, linewidths=0)

@@ -11,7 +11,6 @@ import io
 import math
 import os
 import shutil
-import tempfile
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -19,19 +18,46 @@ from typing import Any, Dict, List, Optional, Sequence
 
 import numpy as np
 
+from ..progress import Progress  # noqa: F401  (moved to gecko.progress; old name kept)
+from ..seta import DESIGN_FIELDS, CriticalStatus
 from .errors import SceneError
 from .models import CHARACTERISTIC_LABELS
 from .planner import Plan, Step, plan_scene
 from .schema import DEFAULT_GRIDS, Point, Scene, Study, eval_grid, load_scene
 
-SETA_FIELDS = ("EI1", "EI2", "EA1", "EA2", "l1", "l2", "alpha1", "alpha2", "w")
+#: the two-level seta design fields (from the bound C++ design type)
+SETA_FIELDS = DESIGN_FIELDS
 
 
 # ---- results ------------------------------------------------------------------------------------
 
 @dataclass
 class Curve:
-    """One plotted curve, ready for CSV and for :mod:`gecko.plot`."""
+    """One plotted curve, ready for CSV and for :mod:`gecko.plot`.
+
+    Attributes
+    ----------
+    study, label : str
+        The study it comes from and its legend label.
+    x, y : numpy.ndarray
+        The points.
+    xname, yname : str
+        Column names of x and y in the CSV file.
+    role : str
+        What it is: ``seta``, ``fiber``, ``kendall``, ``rivlin``, ``linear``, ``f_par``, ...
+    panel : int
+        Axes index for multi-panel plots.
+    meta : dict
+        Anything else the renderer needs.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from gecko.scene import Curve
+    >>> c = Curve(study="s", label="line", x=np.zeros(2), y=np.ones(2), xname="Fn", yname="Ft")
+    >>> c.role
+    'line'
+    """
 
     study: str
     label: str
@@ -46,6 +72,34 @@ class Curve:
 
 @dataclass
 class RunResult:
+    """What :func:`run_scene` computed.
+
+    Attributes
+    ----------
+    scene : Scene
+        The validated scene.
+    plan : Plan
+        The kernels that ran (:meth:`Plan.describe`).
+    data : dict
+        Study name -> one dict per design: output name -> its data (arrays, characteristics).
+    curves : dict
+        Plot name -> the :class:`Curve` objects behind the plot.
+    files : list of pathlib.Path
+        Files written (empty without ``out``).
+    seconds : float
+        Wall time of the run.
+    sweep : pandas.DataFrame or None
+        The table of a ``[sweep]`` section.
+    optimum : gecko.SetaOptimum or None
+        The result of an ``[optimize]`` section.
+
+    Examples
+    --------
+    >>> from gecko.scene import run_scene
+    >>> r = run_scene({"study": [{"name": "k", "model": "kendall", "outputs": {"characteristics": True}}]})
+    >>> sorted(r.data)
+    ['k']
+    """
     scene: Scene
     plan: Plan
     data: Dict[str, List[Dict[str, Any]]]   # study name -> per design: output name -> data
@@ -53,40 +107,26 @@ class RunResult:
     files: List[Path] = field(default_factory=list)
     seconds: float = 0.0
     sweep: Any = None                       # the [sweep] table (a pandas DataFrame)
-    optimum: Any = None                     # the [optimize] result (gecko.design_optimize.SetaOptimum)
-
-
-class Progress:
-    """A one-line progress bar on a terminal, shown only for work longer than ``delay`` seconds."""
-
-    def __init__(self, total: int, label: str = "", stream=None, enabled: Optional[bool] = None,
-                 delay: float = 1.0):
-        import sys
-        self.stream = stream if stream is not None else sys.stderr
-        if enabled is None:
-            enabled = bool(getattr(self.stream, "isatty", lambda: False)())
-        self.enabled, self.total, self.label, self.delay = enabled, max(total, 1), label, delay
-        self.done, self.start, self.shown = 0, time.monotonic(), False
-
-    def advance(self, n: int = 1, what: str = "") -> None:
-        self.done += n
-        if not self.enabled or time.monotonic() - self.start < self.delay:
-            return
-        frac = min(self.done / self.total, 1.0)
-        bar = "#" * int(30 * frac) + "." * (30 - int(30 * frac))
-        self.stream.write(f"\r{self.label} [{bar}] {self.done}/{self.total} {what[:30]:<30}")
-        self.stream.flush()
-        self.shown = True
-
-    def close(self) -> None:
-        if self.shown:
-            self.stream.write("\r" + " " * 100 + "\r")
-            self.stream.flush()
+    optimum: Any = None                     # the [optimize] result (gecko.optimize.SetaOptimum)
 
 
 class Cache(dict):
-    """Results keyed by (kernel, design, grid); share one across runs to reuse invariants.
-    ``hits`` and ``misses`` count designs served from the cache and computed."""
+    """Results keyed by (kernel, design, grid); share one across runs to reuse them.
+
+    Attributes
+    ----------
+    hits, misses : int
+        Designs served from the cache, and designs computed.
+
+    Examples
+    --------
+    >>> from gecko.scene import Cache, run_scene
+    >>> scene = {"study": [{"name": "s", "model": "two_level_seta", "outputs": {"characteristics": ["fn0"]}}]}
+    >>> cache = Cache()
+    >>> _ = run_scene(scene, cache=cache); _ = run_scene(scene, cache=cache)
+    >>> cache.misses, cache.hits
+    (1, 1)
+    """
 
     def __init__(self):
         super().__init__()
@@ -190,7 +230,8 @@ class _Executor:
                     Fn = rivlin_fn(g, p.values["w"], errors="nan")
                 Fn = np.atleast_1d(np.asarray(Fn, dtype=np.float64))
                 self.data[st.name][i]["critical_line"] = {"Ft": g, "Fn": Fn,
-                                                          "status": np.where(np.isfinite(Fn), 0, 5)}
+                                                          "status": np.where(np.isfinite(Fn), CriticalStatus.converged,
+                                                                             CriticalStatus.invalid_input)}
                 self.progress.advance(1, st.name)
 
     def k_fn0_from_line(self, st: Study, step: Step) -> None:
@@ -299,6 +340,22 @@ class _Executor:
             self.data[st.name][i]["sensitivities"] = {"Ft": d["Ft"], "dFn": {k: d["dFn"][k] for k in opts["wrt"]}}
             self.progress.advance(1, st.name)
 
+    def k_contact_contours(self, st: Study, step: Step) -> None:
+        opts = st.outputs["contact_contours"].options
+        res = self.scene.resolution
+        for i in step.points:
+            p = st.points[i]
+            key = f"{st.key}.outputs.contact_contours"
+            gn = eval_grid(opts["Fn"], st.env(p), f"{key}.Fn", res)
+            gt = eval_grid(opts["Ft"], st.env(p), f"{key}.Ft", res)
+
+            def fn():
+                # rows: Ft, columns: Fn (one row of the contour is one Ft)
+                r = _seta(p.values).contact_state(gn[None, :], gt[:, None], errors="nan", threads=self.threads)
+                return {"Fn": gn, "Ft": gt, "a": r.a, "status": r.status, "equilibria": r.equilibria}
+            self.data[st.name][i]["contact_contours"] = self.cached(("contact", _design(p), _key(gn), _key(gt)), fn)
+            self.progress.advance(1, st.name)
+
     # frictional adhesion --------------------------------------------------------------------------
     def k_force_trace(self, st: Study, step: Step) -> None:
         from ..friction import force_trace
@@ -370,8 +427,14 @@ def _peel_characteristics(model: str, v: Dict[str, float]) -> Dict[str, float]:
 
 # ---- curves of each plot -------------------------------------------------------------------------
 
-_TEX = {"EI1": "EI_1", "EI2": "EI_2", "EA1": "EA_1", "EA2": "EA_2", "l1": "l_1", "l2": "l_2",
-        "alpha1": "\\alpha_1", "alpha2": "\\alpha_2", "w": "w"}
+def _tex_symbol(name: str) -> str:
+    """TeX of a design field: EI1 -> EI_1, alpha2 -> \\alpha_2."""
+    head, digit = (name[:-1], name[-1]) if name[-1:].isdigit() else (name, "")
+    head = "\\" + head if head == "alpha" else head
+    return f"{head}_{digit}" if digit else head
+
+
+_TEX = {f: _tex_symbol(f) for f in SETA_FIELDS}
 _ROLE = {"two_level_seta": "seta", "single_fiber": "fiber", "kendall": "kendall", "rivlin": "rivlin"}
 
 
@@ -446,6 +509,17 @@ def plot_curves(scene: Scene, plot, data) -> List[Curve]:
                 else:
                     curves.append(Curve(st.name, base or st.model.title, tr.f_par, tr.f_perp, "F_par", "F_perp",
                                         "force_space", meta={"t": tr.t}))
+        elif plot.kind == "contact_contours":
+            for p in st.points:
+                c = rows[p.index]["contact_contours"]
+                w, l1 = w_of(p), float(p.values["l1"])
+                FN, FT = np.meshgrid(np.asarray(c["Fn"]) / w, np.asarray(c["Ft"]) / w)
+                a = np.asarray(c["a"]) / l1
+                curves.append(Curve(st.name, st.label_for(p, many) if (st.swept_names or st.label) else "",
+                                    FN.ravel(), FT.ravel(), "Fn_bar", "Ft_bar", "contact_contours",
+                                    meta={"columns": {"a_over_l1": a.ravel(), "status": np.asarray(c["status"]).ravel()},
+                                          "shape": a.shape, "levels": st.outputs["contact_contours"].options["levels"],
+                                          "l1": l1, "l2": float(p.values["l2"]), "values": p.values}))
         elif plot.kind == "steady_sliding":
             for p in st.points:
                 f = rows[p.index]["forces"]
@@ -462,12 +536,18 @@ def curves_csv(curves: Sequence[Curve]) -> str:
     xname = curves[0].xname if curves else "x"
     yname = curves[0].yname if curves else "y"
     same = all(c.xname == xname and c.yname == yname for c in curves)
-    head = ["study", "curve", "label", "panel"] + ([xname, yname] if same else ["x_name", "x", "y_name", "y"])
+    # values on the points beyond x and y (a contour's a and status), when every curve has them
+    extra = list(curves[0].meta.get("columns", {})) if curves else []
+    if not all(list(c.meta.get("columns", {})) == extra for c in curves):
+        extra = []
+    head = ["study", "curve", "label", "panel"] + ([xname, yname] if same else ["x_name", "x", "y_name", "y"]) + extra
     wr.writerow(head)
     for i, c in enumerate(curves):
-        for xv, yv in zip(np.asarray(c.x).ravel(), np.asarray(c.y).ravel()):
+        cols = [np.asarray(c.meta["columns"][k]).ravel() for k in extra]
+        for j, (xv, yv) in enumerate(zip(np.asarray(c.x).ravel(), np.asarray(c.y).ravel())):
             row = [c.study, i, c.label, c.panel]
             row += [repr(float(xv)), repr(float(yv))] if same else [c.xname, repr(float(xv)), c.yname, repr(float(yv))]
+            row += [repr(col[j].item()) for col in cols]
             wr.writerow(row)
     return buf.getvalue()
 
@@ -497,6 +577,19 @@ def study_csv(study: Study, rows: List[Dict[str, Any]]) -> Dict[str, str]:
                     for vals in zip(*(np.asarray(d[c]) for c in cols)):
                         wr.writerow([p.index] + [p.swept[n] for n in swept] + [repr(v.item()) for v in vals])
             out[f"{study.name}.{output}.csv"] = buf.getvalue()
+    if any("contact_contours" in r for r in rows):
+        buf = io.StringIO()
+        wr = csv.writer(buf, lineterminator="\n")
+        wr.writerow(["design"] + swept + ["Fn", "Ft", "a", "status", "equilibria"])
+        for p, r in zip(study.points, rows):
+            if "contact_contours" in r:
+                c = r["contact_contours"]
+                for jt, ft in enumerate(c["Ft"]):
+                    for jn, fn in enumerate(c["Fn"]):
+                        wr.writerow([p.index] + [p.swept[n] for n in swept] +
+                                    [repr(float(fn)), repr(float(ft)), repr(float(c["a"][jt, jn])),
+                                     int(c["status"][jt, jn]), int(c["equilibria"][jt, jn])])
+        out[f"{study.name}.contact_contours.csv"] = buf.getvalue()
     if any("force_trace" in r for r in rows):
         buf = io.StringIO()
         wr = csv.writer(buf, lineterminator="\n")
@@ -516,14 +609,57 @@ def run_scene(scene, out: Optional[os.PathLike] = None, *, formats: Optional[Seq
               threads: Optional[int] = None, draw: bool = True, stream=None) -> RunResult:
     """Validate, plan, compute and (with ``out``) write a scene.
 
-    ``scene``: a TOML path, a dict or a :class:`Scene`. ``formats`` adds figure formats (e.g.
-    ``["svg"]``) to every plot's own. ``progress``: None shows a bar only on a terminal.
-    ``draw=False`` (or no ``out``) never imports matplotlib. Returns a :class:`RunResult` whose
-    ``curves`` hold the data behind every plot.
+    Parameters
+    ----------
+    scene : str, os.PathLike, dict or Scene
+        A TOML file, the same structure as a dict, or a loaded scene.
+    out : str or os.PathLike, optional
+        Folder for the CSV files and figures; without it nothing is written and matplotlib is
+        never imported.
+    formats : sequence of str, optional
+        Figure formats added to every plot's own (e.g. ``["svg"]``).
+    resolution : float, optional
+        Scales the number of points of every grid.
+    progress : bool, optional
+        Show a progress bar; None (default) shows one only on a terminal.
+    cache : Cache, optional
+        Results to reuse across runs (scenes that share designs reuse each other's lines).
+    threads : int, optional
+        Threads for the batched kernels (default: the CPU count).
+    draw : bool, optional
+        Draw the figures (default True); False writes the CSV files only.
+    stream : file-like, optional
+        Where the progress bar goes (default stderr).
+
+    Returns
+    -------
+    RunResult
+        The data of every study, the curves behind every plot, the files written, the time taken.
+
+    Raises
+    ------
+    SceneError
+        If the scene is not valid.
+    gecko._optional.MissingOptionalDependency
+        If drawing needs matplotlib (or a sweep pandas) and it is not installed; the message
+        names the extra to install.
+
+    Examples
+    --------
+    >>> from gecko.scene import run_scene
+    >>> scene = {"title": "two angles", "study": [{"name": "seta", "model": "two_level_seta",
+    ...          "parameters": {"alpha2": [0.3, 0.5]}, "outputs": {"characteristics": ["fn0"]}}]}
+    >>> result = run_scene(scene)
+    >>> [round(d["characteristics"]["fn0"], 4) for d in result.data["seta"]]
+    [2.3606, 0.4935]
+    >>> result.files
+    []
     """
     t0 = time.perf_counter()
     sc = load_scene(scene, resolution=resolution)
     plan = plan_scene(sc)
+    if out is not None:  # before computing: an unusable folder is found out now, not after the work
+        _check_out(sc, Path(out))
     cache = cache if cache is not None else Cache()
     threads = threads or min(4, os.cpu_count() or 1)
     total = sum(s.size for s in plan.steps) + (len(sc.plots) if out is not None and draw else 0)
@@ -573,7 +709,7 @@ def _run_sweep(sc: Scene, out: Optional[os.PathLike], threads: int, progress: Op
 
 
 def _run_optimize(sc: Scene):
-    from ..design_optimize import optimize_from_scene
+    from ..optimize import optimize_from_scene
     try:
         return optimize_from_scene(dict(sc.optimize.table))
     except ValueError as exc:
@@ -615,12 +751,21 @@ def _write_sections(sc: Scene, result: RunResult, staging: Path, formats: Sequen
     return names
 
 
-def _write(sc: Scene, result: RunResult, out: Path, extra_formats, draw: bool, bar: Progress) -> List[Path]:
+def _check_out(sc: Scene, out: Path) -> None:
+    """SceneError (a bad command line or scene: exit status 2) when ``out`` cannot be created or
+    written to."""
+    from .._integrity import check_writable
     try:
-        out.mkdir(parents=True, exist_ok=True)
+        check_writable(str(out))
     except OSError as exc:
-        raise SceneError(f"cannot create the output folder {str(out)!r}: {exc.strerror or exc}", source=sc.source) from None
-    staging = Path(tempfile.mkdtemp(prefix=".gecko-staging-", dir=out))
+        raise SceneError(f"cannot write to the output folder {str(out)!r}: {exc.strerror or exc}",
+                         source=sc.source) from None
+
+
+def _write(sc: Scene, result: RunResult, out: Path, extra_formats, draw: bool, bar: Progress) -> List[Path]:
+    _check_out(sc, out)
+    from .._locking import make_staging
+    staging = Path(make_staging(str(out), ".gecko-staging-"))  # also removes those of killed runs
     try:
         names: List[str] = []
         for p in sc.plots:
@@ -646,7 +791,8 @@ def _write(sc: Scene, result: RunResult, out: Path, extra_formats, draw: bool, b
             os.replace(staging / n, out / n)
             final.append(out / n)
         if sc.sweep is not None:  # the table is in place: its chunks are no longer needed
-            shutil.rmtree(_sweep_folder(sc, out), ignore_errors=True)
+            from .._locking import remove_unless_locked
+            remove_unless_locked(_sweep_folder(sc, out))
         return final
     finally:
         shutil.rmtree(staging, ignore_errors=True)

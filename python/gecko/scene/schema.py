@@ -35,7 +35,8 @@ import numpy as np
 from . import expr
 from .errors import SceneError
 from .models import (CHARACTERISTIC_LABELS, MODELS, Model, OutputSpec, Param, _check_keys, _tname,
-                     check_grid, parse_output)
+                     parse_output)
+from .grids import DEFAULT_GRIDS, MAX_GRID_POINTS, _number, eval_grid  # noqa: F401  (old names)
 from .toml import load_toml
 
 TOP_KEYS = ("title", "description", "resolution", "study", "plot", "sweep", "optimize")
@@ -52,55 +53,16 @@ PLOT_KINDS = {
     "force_trace": ("force_trace",),
     "force_space": ("force_trace",),
     "steady_sliding": ("forces",),
+    "contact_contours": ("contact_contours",),
 }
 FORMATS = ("png", "svg", "pdf")
-DEFAULT_GRIDS = {
-    "critical_line": {"range": [0, "ft_end"], "num": 200},
-    "linear_line": {"range": [0, "ft_end"], "num": 50},
-    "sensitivities": {"range": [0, "0.95*ft_end"], "num": 50},
-    "forces": {"logrange": [1e-6, 1e-3], "num": 100},
-}
-
-
-# ---- values -------------------------------------------------------------------------------------
-
-def _number(v, key: str, env: Dict[str, float], allowed=()) -> float:
-    if isinstance(v, bool) or not isinstance(v, (int, float, str)):
-        raise SceneError(f"need a number or an expression string; got {_tname(v)}", key=key)
-    if isinstance(v, str):
-        return expr.evaluate(v, env, key, allowed)
-    return float(v)
-
 
 # Limits on what one study may expand to (scene fuzzing: validation must stay fast and bounded).
-MAX_GRID_POINTS = 1_000_000
 MAX_STUDY_DESIGNS = 100_000
 MAX_STUDY_EVALUATIONS = 10_000_000
 
 
-def eval_grid(spec, env: Dict[str, float], key: str, resolution: float = 1.0) -> np.ndarray:
-    """Numbers of a grid spec (list, range, logrange, values); ranges scale with ``resolution``."""
-    check_grid(spec, key)
-    if isinstance(spec, list):
-        return np.array([_number(v, f"{key}[{i}]", env) for i, v in enumerate(spec)], dtype=np.float64)
-    if "values" in spec:
-        return eval_grid(spec["values"], env, f"{key}.values", resolution)
-    form = "range" if "range" in spec else "logrange"
-    a, b = (_number(v, f"{key}.{form}[{i}]", env) for i, v in enumerate(spec[form]))
-    num = max(2, int(round(spec["num"] * resolution)))
-    # A 100-byte scene must not be able to ask for 1e9 points (found by fuzz/fuzz_scene.py): cap
-    # a grid after the resolution is applied. Larger runs belong in a [sweep] section (chunked).
-    if num > MAX_GRID_POINTS:
-        raise SceneError(f"num x resolution = {num} is out of range: need at most {MAX_GRID_POINTS} "
-                         "points per grid (use a [sweep] section for larger runs)", key=f"{key}.num")
-    if not (math.isfinite(a) and math.isfinite(b)):
-        raise SceneError(f"[{a}, {b}] is out of range: the bounds must be finite", key=f"{key}.{form}")
-    if form == "logrange":
-        if not (a > 0 and b > 0):
-            raise SceneError(f"[{a:g}, {b:g}] is out of range: logrange bounds must be > 0", key=f"{key}.{form}")
-        return np.geomspace(a, b, num)
-    return np.linspace(a, b, num)
-
+# ---- values -------------------------------------------------------------------------------------
 
 def _is_sweep(v) -> bool:
     return isinstance(v, list) or (isinstance(v, dict) and any(k in v for k in ("range", "logrange", "values")))
@@ -173,6 +135,31 @@ class PlotSpec:
 
 @dataclass
 class Scene:
+    """A validated scene (:func:`load_scene`).
+
+    Attributes
+    ----------
+    title, description : str
+        As in the file.
+    resolution : float
+        Scale of every grid's number of points.
+    studies : list of Study
+        Each a model, its designs (:class:`Point`) and the outputs asked for.
+    plots : list of PlotSpec
+        The figures to draw.
+    source : str
+        The file, or ``"<dict>"``.
+    sweep, optimize : optional
+        The ``[sweep]`` and ``[optimize]`` sections, when present.
+
+    Examples
+    --------
+    >>> from gecko.scene import load_scene
+    >>> sc = load_scene({"title": "t", "study": [{"name": "k", "model": "kendall",
+    ...                                          "outputs": {"characteristics": True}}]})
+    >>> sc.study("k").model.name
+    'kendall'
+    """
     title: str
     description: str
     resolution: float
@@ -246,7 +233,35 @@ def _symbol(model: Model, name: str) -> str:
 # ---- parsing -----------------------------------------------------------------------------------
 
 def load_scene(scene, *, resolution: Optional[float] = None) -> Scene:
-    """A validated :class:`Scene` from a TOML path or a dict; ``resolution`` overrides the file's."""
+    """A validated scene from a TOML path or a dict.
+
+    Parameters
+    ----------
+    scene : str, os.PathLike, dict or Scene
+        A TOML file, the same structure as a dict, or a Scene (returned as is).
+    resolution : float, optional
+        Scales the number of points of every grid; overrides the file's ``resolution``.
+
+    Returns
+    -------
+    Scene
+        Title, description, studies (each with its model, designs and outputs), plots, and the
+        optional ``[sweep]`` and ``[optimize]`` sections.
+
+    Raises
+    ------
+    SceneError
+        If the scene cannot be read or is not valid; the message names the file and the key.
+
+    Examples
+    --------
+    >>> from gecko.scene import load_scene
+    >>> scene = {"title": "two angles", "study": [{"name": "seta", "model": "two_level_seta",
+    ...          "parameters": {"alpha2": [0.3, 0.5]}, "outputs": {"characteristics": ["fn0"]}}]}
+    >>> sc = load_scene(scene)
+    >>> sc.title, len(sc.studies[0].points)
+    ('two angles', 2)
+    """
     if isinstance(scene, Scene):
         return scene
     if isinstance(scene, dict):
@@ -255,11 +270,15 @@ def load_scene(scene, *, resolution: Optional[float] = None) -> Scene:
 
 
 def parse_scene(data: dict, source: str = "<dict>", *, resolution: Optional[float] = None) -> Scene:
+    from .limits import check_file_names, check_nesting, check_work
     try:
+        check_nesting(data)
         scene = _parse(data, resolution, None if source == "<dict>" else str(Path(source).resolve().parent))
+        scene.source = source
+        check_file_names(scene)
+        check_work(scene)  # before anything is computed (gecko.scene.limits)
     except SceneError as err:
         raise err.at(source=source) from None
-    scene.source = source
     return scene
 
 
@@ -334,8 +353,8 @@ def _parse_study(s, key: str, res: float) -> Study:
         raise SceneError(f"unknown model {model_name!r}; allowed models: " + ", ".join(MODELS), key=f"{key}.model")
     model = MODELS[model_name]
     name = s.get("name", model_name)
-    if not isinstance(name, str) or not name or any(c in name for c in "/\\\0"):
-        raise SceneError(f"need a non-empty string without slashes; got {name!r}", key=f"{key}.name")
+    from .limits import check_name
+    check_name(name, f"{key}.name", "study name")
     combine = s.get("combine", "cross")
     if combine not in ("cross", "zip"):
         raise SceneError(f"{combine!r} is not allowed: need 'cross' (every combination) or 'zip' (pairwise)",
@@ -381,6 +400,16 @@ def _parse_study(s, key: str, res: float) -> Study:
                                      f"most {MAX_STUDY_EVALUATIONS} evaluations per output (use a [sweep] "
                                      "section for larger runs)", key=gkey)
                 _check_grid_values(study, spec.name, g, p, gkey)
+    if "contact_contours" in outputs:  # two grids (Fn, Ft): evaluated here for the same reasons
+        spec = outputs["contact_contours"]
+        for p in points:
+            gn = eval_grid(spec.options["Fn"], study.env(p), f"{key}.outputs.contact_contours.Fn", res)
+            gt = eval_grid(spec.options["Ft"], study.env(p), f"{key}.outputs.contact_contours.Ft", res)
+            if len(points) * gn.size * gt.size > MAX_STUDY_EVALUATIONS:
+                raise SceneError(f"{len(points)} designs x {gn.size} x {gt.size} loads is out of range: need at most "
+                                 f"{MAX_STUDY_EVALUATIONS} evaluations per output", key=f"{key}.outputs.contact_contours")
+            _check_grid_values(study, "contact_contours", gn, p, f"{key}.outputs.contact_contours.Fn")
+            _check_grid_values(study, "contact_contours_ft", gt, p, f"{key}.outputs.contact_contours.Ft")
     return study
 
 
@@ -390,7 +419,7 @@ def _check_grid_values(study: Study, output: str, g: np.ndarray, p: Point, key: 
     if output == "forces" and np.any(g < 0):
         raise SceneError(f"velocity {g.min():g} is out of range: need V >= 0", key=key)
     env = study.env(p)
-    if output in ("critical_line", "shapes", "sensitivities") and "ft_max" in env:
+    if output in ("critical_line", "shapes", "sensitivities", "contact_contours_ft") and "ft_max" in env:
         bad = g[np.abs(g) > env["ft_max"] * (1 + 1e-12)]
         if bad.size:
             raise SceneError(f"Ft = {bad[0]:g} is out of range: need |Ft| <= (Ft)max = sqrt(2 EA w) = "
@@ -605,6 +634,8 @@ def _parse_plot(p, key: str, studies: List[Study]) -> PlotSpec:
     if not isinstance(name, str) or not name or not all(c.isalnum() or c in "-_." for c in name) or name[0] == ".":
         raise SceneError(f"{name!r} is not allowed: need a file-name stem of letters, digits, '-', '_', '.'",
                          key=f"{key}.name")
+    from .limits import check_name
+    check_name(name, f"{key}.name", "plot name")
     wanted = PLOT_KINDS[kind]
     names = p.get("studies")
     if names is None:

@@ -15,7 +15,32 @@ except ModuleNotFoundError:  # pragma: no cover
 
 
 def load_toml(path) -> dict:
-    """Parse a TOML file; every failure (missing, unreadable, malformed) is a SceneError naming it."""
+    """Parse a TOML file with ``tomllib`` (Python >= 3.11) or ``tomli``.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The file.
+
+    Returns
+    -------
+    dict
+        The parsed document.
+
+    Raises
+    ------
+    SceneError
+        If the file is missing, unreadable, not UTF-8 or not valid TOML (naming it), or if no TOML
+        reader is available (``pip install tomli`` on Python < 3.11).
+
+    Examples
+    --------
+    >>> from pathlib import Path
+    >>> from gecko.scene.toml import load_toml
+    >>> _ = Path("s.toml").write_text('title = "demo"')
+    >>> load_toml("s.toml")
+    {'title': 'demo'}
+    """
     source = str(path)
     if _toml is None:
         raise SceneError("reading TOML scenes needs Python >= 3.11 (tomllib) or the 'tomli' package "
@@ -31,3 +56,5 @@ def load_toml(path) -> dict:
         raise SceneError(f"not UTF-8 text ({exc.reason} at byte {exc.start})", source=source) from None
     except _toml.TOMLDecodeError as exc:
         raise SceneError(f"not valid TOML: {exc}", source=source) from None
+    except RecursionError:  # arrays or inline tables nested hundreds of levels deep
+        raise SceneError("not a usable scene: tables and arrays are nested too deeply", source=source) from None

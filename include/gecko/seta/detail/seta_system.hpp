@@ -132,7 +132,7 @@ struct seta_system {
     return m;
   }
 
-  // Linear (small-deformation) state at Ft = 0, models.md §1 eq 18 with its shape: the start of
+  // Linear (small-deformation) state at Ft = 0, docs/theory/two_level_seta.md eq 18 with its shape: the start of
   // the homotopy to the natural state.
   vec small_deformation_state() const {
     using std::sin; using std::sqrt;
