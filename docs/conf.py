@@ -48,12 +48,12 @@ autodoc_default_options = {"members": False}
 autodoc_typehints = "none"
 numpydoc_show_class_members = False
 numpydoc_class_members_toctree = False
-numpydoc_attributes_as_param_list = False
+numpydoc_attributes_as_param_list = True
 
 exclude_patterns = ["_build", "jupyter_execute", "Thumbs.db", ".DS_Store", "**.ipynb_checkpoints",
                     "_ext"]
 source_suffix = {".rst": "restructuredtext", ".md": "myst-nb"}
-templates_path = []
+templates_path = ["_templates"]
 
 html_theme = "alabaster"
 html_title = f"gecko {release}"

@@ -11,19 +11,12 @@ statuses and turning-point counts, the verifier's counts where conclusive, and S
 its Fn and beta arrays, so the bitwise comparison needs none of the regenerable data.
 
     PYTHONPATH=<gecko> python3 -m validation.recheck [validation/data/stress_10000_states.npz] [--workers 2] [--json out.json]
-"""Re-run gecko (the one on PYTHONPATH) on a finished campaign's states and compare: Fn, beta and
-status bitwise against what the campaign recorded, and the turning-point counts against the
-verifier's sign changes of theta' (stored in the campaign). Shows that a later solver gives the
-campaign's numbers, without re-running the verifier (~1.5 CPU-h for 10,000 designs).
-
-    PYTHONPATH=<gecko> python3 -m validation.recheck validation/stress_10000.npz [--workers 2] [--json out.json]
 """
 from __future__ import annotations
 
 import argparse
 import multiprocessing as mp
 import os
-import sys
 import time
 
 import hashlib
@@ -88,6 +81,10 @@ def main(argv=None):
     out = dict(campaign=os.path.relpath(args.npz), designs=int(n), states=int(status.size),
                Fn_bitwise_equal=bool(fn_equal), beta_bitwise_equal=bool(beta_equal),
                status_equal=bool(np.array_equal(status, z["status"])),
+               # states the campaign solved that are now flagged inadmissible (status 7, values kept)
+               now_inadmissible=int(((status == 7) & (z["status"] == 0)).sum()),
+               status_equal_but_inadmissible=bool(np.array_equal(np.where((status == 7) & (z["status"] == 0), 0,
+                                                                          status), z["status"])),
                turning_counts_changed=int(((tpb != z["tpb"]) | (tps != z["tps"]))[ok].sum()),
                turning_counts_checked=int(checked.sum()), turning_counts_agree=int(agree.sum()),
                seconds=round(time.time() - t0, 1))

@@ -25,8 +25,6 @@ from __future__ import annotations
 
 import argparse
 import collections
-import os
-import sys
 import time
 
 import numpy as np

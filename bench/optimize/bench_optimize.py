@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Benchmark and study of gecko.optimize_seta (python/gecko/design_optimize.py).
+"""Benchmark and study of gecko.optimize_seta (python/gecko/optimize/).
 
 Measures, for a set of design problems at the paper's reference scene, the wall time and the number
 of critical-line evaluations to converge from 8 starts (median wall time of --repeats runs), and
@@ -22,7 +22,7 @@ import numpy as np
 import scipy
 
 import gecko
-from gecko.design_optimize import optimize_seta, seta_objective
+from gecko.optimize import optimize_seta, seta_objective
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 RESULTS = os.path.join(os.path.dirname(HERE), "results")

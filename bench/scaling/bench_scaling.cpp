@@ -29,20 +29,15 @@
 #include <vector>
 
 #include "gecko/seta/batch.hpp"
+#include "harness.hpp"  // bench/harness.hpp: the benchmarks' one timing harness
 
 namespace {
 
 using seta = gecko::TwoLevelSeta<double>;
 using state = gecko::critical_state<double>;
 
-double now_s() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+using gecko_bench::median;
+double now_s() { return gecko_bench::wall_seconds(); }
 
 // The random-design box of bench/seta/bench_seta.cpp (and tests/data/gen_seta_reference.py).
 std::vector<seta> random_designs(std::size_t n, unsigned long long seed) {
@@ -72,11 +67,7 @@ std::vector<double> grid(double hi, std::size_t n) {
 }
 const double random_ft_hi = 0.99 * std::sqrt(20.0);
 
-double cpu_s(clockid_t clock) {
-  timespec t;
-  clock_gettime(clock, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
+double cpu_s(clockid_t clock) { return gecko_bench::cpu_seconds(clock); }
 
 // Seconds of one batch call: wall, CPU of the calling thread (with threads = 1 the batch runs in
 // it: the work itself, not the time other jobs held the core), CPU of the process (all threads).

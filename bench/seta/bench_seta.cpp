@@ -32,21 +32,13 @@
 #include <vector>
 
 #include "gecko/seta.hpp"
+#include "harness.hpp"  // bench/harness.hpp: the benchmarks' one timing harness
 
 namespace {
 
-double thread_cpu_ns() {
-  timespec t;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return 1e9 * static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec);
-}
-double wall_ns() {
-  return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
+using gecko_bench::median;
+using gecko_bench::thread_cpu_ns;
+using gecko_bench::wall_ns;
 
 // ---- independent check: RK4 shooting (as tests/seta/seta_shooting.hpp) ----------------------
 long double rhs(long double th, long double EI, long double c, long double Fn, long double Ft) {

@@ -22,7 +22,7 @@
 //                   the independent ODE shooting of tests/seta/seta_shooting.hpp.
 //
 // Errors: kernels and segment lengths, max relative error in eps = 2^-52; the seta, max
-// |dFn| / max(1, |Fn|). Timing: bench/elliptic/harness.hpp (thread CPU time of whole sweeps of the
+// |dFn| / max(1, |Fn|). Timing: bench/harness.hpp (thread CPU time of whole sweeps of the
 // input set, median of interleaved repetitions); the batch on 2 threads needs wall time, so the
 // batch rows are wall time for both thread counts.
 //
@@ -55,7 +55,7 @@
 #include <vector>
 
 #include "data_file.hpp"      // bench/elliptic
-#include "harness.hpp"        // bench/elliptic
+#include "harness.hpp"        // bench/harness.hpp
 #include "seta_shooting.hpp"  // tests/seta
 #include "tradeoff_config.hpp"
 

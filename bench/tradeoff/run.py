@@ -466,7 +466,7 @@ def main(argv=None):
     info["command"] = command
     info["run_time_s"] = round(runtime, 1)
     info["timing"] = ("medians over repetitions; C++ kernels: thread CPU time of whole sweeps of the input set "
-                      "(bench/elliptic/harness.hpp); batch: wall time; Python: process CPU time. The machine is "
+                      "(bench/harness.hpp); batch: wall time; Python: process CPU time. The machine is "
                       "shared with other jobs: compare within one run.")
     write_csv(rows, out / "tradeoff.csv")
     with open(out / "tradeoff.json", "w") as f:

@@ -70,10 +70,9 @@ pandas (and pyarrow for ``out=``, dask.distributed for clusters) are optional de
 from __future__ import annotations
 
 import hashlib
-import math
 import os
 import time
-from typing import Any, Callable, Dict, Iterable, List, Mapping, Optional, Sequence, Tuple, Union
+from typing import Callable, Dict, List, Optional, Sequence, Union
 
 import numpy as np
 

@@ -788,13 +788,29 @@ def simulate_spatulae(V: float, model: SlidingModel = FIG6_VISCOELASTIC, *, spat
 
 @dataclasses.dataclass(frozen=True)
 class ParametricLaw:
-    """A user detachment law ``G = func(V, **params)`` with named parameters, for
-    :func:`steady_sliding`, :func:`simulate_spatulae` and :func:`fit_steady_sliding`.
+    """A user detachment law ``G = func(V, **params)`` with named parameters.
 
-    ``func`` must accept an array of velocities (numpy-vectorised). ``positive`` names the
-    parameters that must stay positive (fitted as logarithms); default: all of them.
-    Example: ``ParametricLaw(lambda V, G0, a: G0 * (1 + a * np.log1p(V / 1e-4)), {"G0": 3e-14,
-    "a": 0.5})``.
+    For :func:`steady_sliding`, :func:`simulate_spatulae` and :func:`fit_steady_sliding` (which fits
+    its parameters by name).
+
+    Parameters
+    ----------
+    func : callable
+        ``func(V, **params)``; must accept an array of velocities (numpy-vectorised).
+    params : dict
+        The parameters by name, with their values (the starting values of a fit).
+    positive : tuple of str, optional
+        Parameters that must stay positive (fitted as logarithms); default: all of them.
+
+    Examples
+    --------
+    >>> import numpy as np, gecko
+    >>> law = gecko.ParametricLaw(lambda V, G0, a: G0 * (1 + a * np.log1p(V / 1e-4)),
+    ...                           {"G0": 3e-14, "a": 0.5})
+    >>> float(law(0.0))
+    3e-14
+    >>> law.replace(a=1.0).params
+    {'G0': 3e-14, 'a': 1.0}
     """
 
     func: Callable
@@ -869,9 +885,14 @@ class SteadySlidingFit(NamedTuple):
     profile_upper: Optional[np.ndarray] = None
     sigma_known: bool = False
 
+    @property
+    def status_code(self) -> "FitStatus":
+        """``status`` as a :class:`FitStatus` member (code compares these, not the text)."""
+        return FitStatus[self.status]
+
 
 def _sigma_array(s, n, name):
-    a = np.asarray(s, dtype=np.float64)
+    a = _real_array(s, name)
     if a.ndim > 1 or (a.ndim == 1 and a.size != n):
         raise ValueError(f"{name} must be a scalar or have one entry per velocity ({n}), got shape "
                          f"{a.shape}")
@@ -882,11 +903,6 @@ def _sigma_array(s, n, name):
         raise ValueError(f"gecko.fit_steady_sliding: {name}[{i}] = {float(a[i])!r} is out of range: need "
                          "0 < sigma < inf")
     return a
-
-    @property
-    def status_code(self) -> "FitStatus":
-        """``status`` as a :class:`FitStatus` member (code compares these, not the text)."""
-        return FitStatus[self.status]
 
 
 def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC, *,
@@ -986,8 +1002,7 @@ def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC
         raise ValueError(f"profile_level = {profile_level!r} is out of range: need 0 < level < 1")
     if not (max_condition > 1):
         raise ValueError(f"max_condition = {max_condition!r} is out of range: need > 1")
-    if int(max_iterations) < 0:
-        raise ValueError(f"max_iterations = {max_iterations!r} is out of range: need >= 0")
+    max_iterations = _check_count(max_iterations, "max_iterations")  # an integer >= 1, not 2.5 or 0
     delta = NormalDist().inv_cdf(0.5 + profile_level / 2) ** 2
     sp = sq = None
     if sigma is not None:
@@ -1000,7 +1015,7 @@ def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC
                                  float(guess.f_perp1), kind,
                                  float(getattr(law, "G0", 1.0)), float(getattr(law, "V_star", 1.0)),
                                  n, bool(fit_f_par1), bool(fit_f_perp1), bool(fit_coupling),
-                                 _check_count(max_iterations, "max_iterations"), sp, sq, known,
+                                 max_iterations, sp, sq, known,
                                  bool(profile), float(delta),
                                  float(max_condition), **custom)
     values = dict(zip(r["names"], r["values"]))

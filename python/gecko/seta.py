@@ -293,19 +293,47 @@ class ContactStatus(enum.IntEnum):
 
 @dataclass
 class ContactState:
-    """The forward problem's result (``TwoLevelSeta.contact_state``), arrays in the broadcast shape
-    of (Fn, Ft); NaN (or -1 for counts) where ``status != 0``.
+    """The forward problem's result (:meth:`TwoLevelSeta.contact_state`).
 
-    ``a``: non-contact length in the convected coordinate, l1 < a <= l1 + l2; ``contact_length`` =
-    l1 + l2 - a; ``theta_joint`` = theta2(l1); ``theta_rate_joint`` = theta2'(l1), ``theta_rate_base``
-    = theta1'(0); ``turning_points`` (beam + spatula, also separately); ``max_axial_strain`` = max
-    |T|/EA over the free length; ``energy_release_rate``: the left side of eq (3) at the edge (= w at
-    every equilibrium, a check); ``equilibria``: how many equilibria the load has on the spatula;
-    ``status``: ``ContactStatus`` values.
+    Arrays in the broadcast shape of (Fn, Ft); NaN (or -1 for counts) where ``status != 0``. With
+    ``all_equilibria=True`` every per-state field has one more trailing axis, one entry per
+    equilibrium (padded with NaN / -1), and ``state_status`` gives each entry's status (-1:
+    padding); ``status`` and ``equilibria`` keep the load's shape.
 
-    With ``all_equilibria=True`` every per-state field has one more trailing axis, one entry per
-    equilibrium (padded with NaN / -1), and ``state_status`` gives each entry's status (-1: padding);
-    ``status`` and ``equilibria`` keep the load's shape."""
+    Attributes
+    ----------
+    Fn, Ft : numpy.ndarray
+        The loads.
+    a : numpy.ndarray
+        Non-contact length in the convected coordinate, l1 < a <= l1 + l2.
+    contact_length : numpy.ndarray
+        l1 + l2 - a.
+    theta_joint : numpy.ndarray
+        theta2(l1).
+    theta_rate_joint, theta_rate_base : numpy.ndarray
+        theta2'(l1) and theta1'(0).
+    turning_points, turning_points_beam, turning_points_spatula : numpy.ndarray
+        Turning points of theta (beam + spatula, and each).
+    max_axial_strain : numpy.ndarray
+        Max of abs(T)/EA over the free length.
+    energy_release_rate : numpy.ndarray
+        The left side of paper 001 eq (3) at the edge (= w at every equilibrium: a check).
+    equilibria : numpy.ndarray
+        How many equilibria the load has on the spatula.
+    status : numpy.ndarray
+        :class:`ContactStatus` values; :meth:`status_names` gives their names.
+    state_status : numpy.ndarray or None
+        Per-equilibrium status with ``all_equilibria=True``.
+
+    Examples
+    --------
+    >>> import gecko
+    >>> st = gecko.TwoLevelSeta().contact_state(Fn=[0.5, 0.26, 0.1], Ft=0.0)
+    >>> st.contact_length.round(6)
+    array([0.021559, 0.000907,      nan])
+    >>> st.status_names().tolist()
+    ['CONVERGED', 'CONVERGED', 'NO_CONTACT']
+    """
 
     Fn: np.ndarray
     Ft: np.ndarray
@@ -477,23 +505,48 @@ class TwoLevelSeta:
                       scan_points: Optional[int] = None, threads: int = 0) -> ContactState:
         """The forward problem (paper 001 after eq 15): the contact state at the load (Fn, Ft).
 
-        ``Fn`` and ``Ft`` broadcast like numpy arrays. For each load the joint angle theta2(l1) is
-        solved from the beam's length equation along the spatula's orbit through the contact edge
-        (every root bracketed by a scan and refined to full precision), then a from the spatula's.
-        Status 0 only where exactly one equilibrium has its contact edge on the spatula; loads below
-        the critical line (no side contact), loads that would push the edge onto the beam, and loads
-        with several equilibria get their own ``ContactStatus``. ``all_equilibria=True`` returns every
-        equilibrium (see ``ContactState``). ``scan_points``: scan nodes per monotone piece of the
-        orbit (default 8). ``threads``: 0 automatic.
+        For each load the joint angle theta2(l1) is solved from the beam's length equation along the
+        spatula's orbit through the contact edge (every root bracketed by a scan and refined to full
+        precision), then a from the spatula's. Status 0 only where exactly one equilibrium has its
+        contact edge on the spatula; loads below the critical line (no side contact), loads that would
+        push the edge onto the beam, and loads with several equilibria get their own
+        :class:`ContactStatus`.
 
-        Bad input (NaN or infinite loads, Ft > (Ft)max = sqrt(2 EA2 w), shapes that do not
-        broadcast) raises ``ValueError`` naming the argument and its index; with ``errors="nan"`` such
-        elements get status ``INVALID_INPUT`` instead. Ft < -(Ft)max is valid input: no edge can be
-        in equilibrium there (status ``NO_CONTACT``).
+        Parameters
+        ----------
+        Fn, Ft : array_like
+            Normal and shear loads; broadcast like numpy arrays. Ft < -(Ft)max is valid input (no edge
+            can be in equilibrium there: status ``NO_CONTACT``).
+        all_equilibria : bool, optional
+            Return every equilibrium (see :class:`ContactState`).
+        errors : {"raise", "nan"}, optional
+            Bad input raises ``ValueError`` (default) or gives status ``INVALID_INPUT``.
+        scan_points : int, optional
+            Scan nodes per monotone piece of the orbit, 3 to 64 (default 8).
+        threads : int, optional
+            0 (default): automatic.
+
+        Returns
+        -------
+        ContactState
+
+        Raises
+        ------
+        ValueError
+            If a load is NaN or infinite, Ft > (Ft)max = sqrt(2 EA2 w), the shapes do not broadcast,
+            or an option is out of range; the message names the argument and its index.
+
+        Examples
+        --------
+        >>> import gecko
+        >>> st = gecko.TwoLevelSeta().contact_state(Fn=0.5, Ft=0.0)
+        >>> round(float(st.a), 6), abs(float(st.energy_release_rate) - 1.0) < 1e-12   # = w
+        (1.078441, True)
         """
         code = _error_code(errors)
+        fn_a, ft_a = _real_array(Fn, "Fn"), _real_array(Ft, "Ft")
         try:
-            fn_b, ft_b = np.broadcast_arrays(np.asarray(Fn, dtype=np.float64), np.asarray(Ft, dtype=np.float64))
+            fn_b, ft_b = np.broadcast_arrays(fn_a, ft_a)
         except ValueError:
             raise ValueError(f"contact_state: Fn and Ft do not broadcast (shapes {np.shape(Fn)} and "
                              f"{np.shape(Ft)})") from None
@@ -730,7 +783,7 @@ class TwoLevelSeta:
         -1.0686
         """
         d = self.small_deformation()
-        ft = np.asarray(Ft, dtype=np.float64)
+        ft = _real_array(Ft, "Ft")
         if not np.all(np.isfinite(ft)):
             i = int(np.flatnonzero(~np.isfinite(ft.reshape(-1)))[0])
             raise ValueError(f"Ft[{i}] = {ft.reshape(-1)[i]!r}: must be finite")

@@ -26,8 +26,7 @@ using policies::nan_policy;
 
 TwoLevelSeta<double> design_from(const double* p) {
   TwoLevelSeta<double> s;
-  s.EI1 = p[0]; s.EI2 = p[1]; s.EA1 = p[2]; s.EA2 = p[3];
-  s.l1 = p[4]; s.l2 = p[5]; s.alpha1 = p[6]; s.alpha2 = p[7]; s.w = p[8];
+  for (const auto& f : seta_design_fields<double>()) s.*(f.member) = *p++;  // the fields' order
   return s;
 }
 

@@ -6,6 +6,9 @@
 #include <cstddef>
 #include <limits>
 #include <string>
+#include <vector>
+
+#include <pybind11/stl.h>
 
 #include <pybind11/native_enum.h>
 
@@ -23,6 +26,12 @@ using Design = TwoLevelSeta<double>;
 // A float as Python writes it (repr), so that the design's repr can be pasted back.
 std::string float_repr(double v) { return py::repr(py::float_(v)).cast<std::string>(); }
 
+std::vector<std::string> names_of_fields() {
+  std::vector<std::string> out;
+  for (const auto& f : seta_design_fields<double>()) out.emplace_back(f.name);
+  return out;
+}
+
 std::string design_repr(const Design& s) {
   std::string out = "SetaDesign(";
   const char* sep = "";
@@ -39,20 +48,30 @@ void bind_design(py::module_& m) {
   const auto& fields = seta_design_fields<double>();
   const Design defaults{};
   py::class_<Design> cls(m, "SetaDesign",
-                         "A two-level seta design (EI1, EI2, EA1, EA2, l1, l2, alpha1, alpha2, w), validated "
-                         "on construction; defaults: the paper's reference scene.");
-  cls.def(py::init([](double EI1, double EI2, double EA1, double EA2, double l1, double l2, double alpha1,
-                      double alpha2, double w) {
+                         "A two-level seta design (the fields in `fields`), validated on construction; "
+                         "defaults: the paper's reference scene.");
+  // Keyword arguments named by the field table (any subset; the others keep the defaults).
+  cls.def(py::init([](const py::kwargs& kwargs) {
             Design s;
-            s.EI1 = EI1; s.EI2 = EI2; s.EA1 = EA1; s.EA2 = EA2;
-            s.l1 = l1; s.l2 = l2; s.alpha1 = alpha1; s.alpha2 = alpha2; s.w = w;
+            for (const auto& item : kwargs) {
+              const auto key = item.first.cast<std::string>();
+              const seta_design_field<double>* field = nullptr;
+              for (const auto& f : seta_design_fields<double>())
+                if (key == f.name) field = &f;
+              if (field == nullptr)
+                throw py::type_error("gecko.SetaDesign: unknown field '" + key + "'; the fields are " +
+                                     py::str(", ").attr("join")(py::cast(names_of_fields())).cast<std::string>());
+              try {
+                s.*(field->member) = item.second.cast<double>();
+              } catch (const py::cast_error&) {
+                throw py::type_error("gecko.SetaDesign: " + key + " must be a number, got " +
+                                     py::repr(item.second).cast<std::string>());
+              }
+            }
             detail::check_seta<double, default_policy>(s, "gecko.SetaDesign");
             return s;
           }),
-          py::kw_only(), py::arg("EI1") = defaults.EI1, py::arg("EI2") = defaults.EI2,
-          py::arg("EA1") = defaults.EA1, py::arg("EA2") = defaults.EA2, py::arg("l1") = defaults.l1,
-          py::arg("l2") = defaults.l2, py::arg("alpha1") = defaults.alpha1, py::arg("alpha2") = defaults.alpha2,
-          py::arg("w") = defaults.w);
+          "SetaDesign(**fields): any of the fields by name (keywords only), the others their defaults.");
   // Read-only fields: a design is validated once, at construction.
   for (const auto& f : fields) {
     const auto member = f.member;
@@ -138,6 +157,9 @@ void bind_enums(py::module_& m) {
       .value("converged", fit_status::converged)
       .value("max_iterations", fit_status::max_iterations)
       .value("singular", fit_status::singular)
+      .value("not_identifiable", fit_status::not_identifiable)
+      .value("no_progress", fit_status::no_progress)
+      .value("non_finite", fit_status::non_finite)
       .finalize();
 }
 

@@ -19,11 +19,12 @@ TEMPLATE_TEST_CASE("closed form against its 30-digit evaluation and the energy i
   CHECK(rel(4 * C(0, 0), beam_ref("parabola_closed_form.a11")) <= 4 * eps);
   CHECK(rel(4 * C(0, 1), beam_ref("parabola_closed_form.a12")) <= 4 * eps);
   CHECK(rel(4 * C(1, 1), beam_ref("parabola_closed_form.a22")) <= 4 * eps);
-  // The closed form is itself right: mpmath's quadrature of the energy integral B = a / 2
-  // (this is where the OCR's "+" in a11 fails: it would be off by ln(4+sqrt17)/1024).
-  CHECK(std::abs(beam_ref("parabola_closed_form.a11") - 2 * beam_ref("parabola.B11")) < 1e-25L);
-  CHECK(std::abs(beam_ref("parabola_closed_form.a12") - 2 * beam_ref("parabola.B12")) < 1e-25L);
-  CHECK(std::abs(beam_ref("parabola_closed_form.a22") - 2 * beam_ref("parabola.B22")) < 1e-25L);
+  // The closed form is itself right: against mpmath's quadrature of the energy integral, a = 2 B,
+  // which does not go through the closed form (this is where the OCR's "+" in a11 fails: it
+  // would be off by ln(4+sqrt17)/1024). The two references agree to 1e-25, far below eps.
+  CHECK(rel(4 * C(0, 0), 2 * beam_ref("parabola.B11")) <= 4 * eps);
+  CHECK(rel(4 * C(0, 1), 2 * beam_ref("parabola.B12")) <= 4 * eps);
+  CHECK(rel(4 * C(1, 1), 2 * beam_ref("parabola.B22")) <= 4 * eps);
 }
 
 TEST_CASE("parabolic rigidity: symmetric, positive definite, coupled, ~[[5,-3],[-3,2]]",

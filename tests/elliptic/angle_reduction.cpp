@@ -33,8 +33,12 @@ TEST_CASE("angle_reduction: remainder within pi/4 and accurate") {
   // Independent check for j < 2^26: pi/2 split into 26-bit pieces p0..p3 (exact products).
   const double p0 = 1.5707963109016418457031250;            // 26 bits of pi/2
   const double p1 = 1.5893254712295857973000658e-08;        // next 26 bits
-  const double p2 = 6.1232339957367574e-17;                 // rest, rounded (error ~1e-33)
-  CHECK(std::fabs(static_cast<long double>(p0) + p1 + p2 - 1.570796326794896619231321691639751442L) <= 1e-32L);
+  const double p2 = 6.1232339957367574e-17;                 // rest, to 17 digits (error ~9e-32)
+  // The split is independent of the library's constants and must agree with them: p0 + p1 is
+  // exactly the double nearest pi/2, and p2 is its remainder (the subtraction is exact).
+  using C = gecko::detail::pi_constants<double>;
+  CHECK(p0 + p1 == C::pio2_hi);
+  CHECK(std::fabs(p2 - C::pio2_lo) <= 1e-31);
   std::mt19937_64 gen(42);
   std::uniform_real_distribution<double> u(0, 7.5);
   double worst = 0;

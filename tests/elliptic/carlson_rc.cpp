@@ -7,45 +7,23 @@
 #include <cmath>
 #include <limits>
 
-#include "elliptic/reference_table.hpp"
+#include "elliptic/typed_table.hpp"
 
 using gecko_test::reference_table;
-using gecko_test::tally_table;
 
 namespace {
 const reference_table& rc_table() {
   static const reference_table t("elliptic_rc.csv");
   return t;
 }
-template <class T>
-gecko_test::error_tally rc_tally(const char* what) {
-  const auto& t = rc_table();
-  const auto x = t.column("x"), y = t.column("y"), v = t.column("rc");
-  return tally_table<T>(
-      t, what, [&](std::size_t i) { return gecko::carlson_rc(t.get<T>(i, x), t.get<T>(i, y)); },
-      [&](std::size_t i) { return t.value(i, v); }, [](std::size_t) { return true; });
-}
 }  // namespace
 
-TEST_CASE("carlson_rc: mpmath table, double: <= 4 eps") {
-  CHECK(rc_tally<double>("carlson_rc<double>").overall.worst <= 4);
-}
-
-TEST_CASE("carlson_rc: mpmath table, long double: <= 4 eps") {
-  CHECK(rc_tally<long double>("carlson_rc<long double>").overall.worst <= 4);
-}
-
-TEST_CASE("carlson_rc: table inputs rounded to float, against double: <= 4 eps(float)") {
+// float: table inputs rounded to float, against double at the rounded inputs (see typed_table.hpp).
+TEMPLATE_TEST_CASE("carlson_rc: mpmath table: <= 4 eps", "[carlson_rc]", float, double, long double) {
   const auto& t = rc_table();
-  const auto x = t.column("x"), y = t.column("y");
-  auto in = [&](std::size_t i, std::size_t c) { return static_cast<float>(t.get<double>(i, c)); };
-  const auto tally = tally_table<float>(
-      t, "carlson_rc<float>", [&](std::size_t i) { return gecko::carlson_rc(in(i, x), in(i, y)); },
-      [&](std::size_t i) { return static_cast<long double>(gecko::carlson_rc<double>(in(i, x), in(i, y))); },
-      [&](std::size_t i) {
-        return gecko_test::float_representable(t.get<double>(i, x)) &&
-               gecko_test::float_representable(t.get<double>(i, y));
-      });
+  const auto tally = gecko_test::kernel_tally<TestType>(
+      t, "carlson_rc", std::array<std::size_t, 2>{t.column("x"), t.column("y")}, t.column("rc"),
+      [](auto... a) { return gecko::carlson_rc(a...); });
   CHECK(tally.overall.worst <= 4);
 }
 

@@ -6,10 +6,9 @@
 #include <cmath>
 #include <limits>
 
-#include "elliptic/reference_table.hpp"
+#include "elliptic/typed_table.hpp"
 
 using gecko_test::reference_table;
-using gecko_test::tally_table;
 
 namespace {
 const reference_table& rd_table() {
@@ -18,49 +17,14 @@ const reference_table& rd_table() {
 }
 }  // namespace
 
-TEST_CASE("carlson_rd: mpmath table, double: <= 8 eps") {
+// float: table inputs rounded to float, against double at the rounded inputs (see
+// typed_table.hpp); float R_D ~ z^(-3/2) must itself stay a normal float.
+TEMPLATE_TEST_CASE("carlson_rd: mpmath table: <= 8 eps", "[carlson_rd]", float, double, long double) {
   const auto& t = rd_table();
-  const auto x = t.column("x"), y = t.column("y"), z = t.column("z"), v = t.column("rd");
-  const auto tally = tally_table<double>(
-      t, "carlson_rd<double>",
-      [&](std::size_t i) {
-        return gecko::carlson_rd(t.get<double>(i, x), t.get<double>(i, y), t.get<double>(i, z));
-      },
-      [&](std::size_t i) { return t.value(i, v); }, [](std::size_t) { return true; });
-  CHECK(tally.overall.worst <= 8);
-}
-
-TEST_CASE("carlson_rd: mpmath table, long double: <= 8 eps") {
-  const auto& t = rd_table();
-  const auto x = t.column("x"), y = t.column("y"), z = t.column("z"), v = t.column("rd");
-  const auto tally = tally_table<long double>(
-      t, "carlson_rd<long double>",
-      [&](std::size_t i) {
-        return gecko::carlson_rd(t.get<long double>(i, x), t.get<long double>(i, y),
-                                 t.get<long double>(i, z));
-      },
-      [&](std::size_t i) { return t.value(i, v); }, [](std::size_t) { return true; });
-  CHECK(tally.overall.worst <= 8);
-}
-
-TEST_CASE("carlson_rd: table inputs rounded to float, against double: <= 8 eps(float)") {
-  const auto& t = rd_table();
-  const auto x = t.column("x"), y = t.column("y"), z = t.column("z");
-  auto in = [&](std::size_t i, std::size_t c) { return static_cast<float>(t.get<double>(i, c)); };
-  const auto tally = tally_table<float>(
-      t, "carlson_rd<float>",
-      [&](std::size_t i) { return gecko::carlson_rd(in(i, x), in(i, y), in(i, z)); },
-      [&](std::size_t i) {
-        return static_cast<long double>(gecko::carlson_rd<double>(in(i, x), in(i, y), in(i, z)));
-      },
-      [&](std::size_t i) {
-        if (!(gecko_test::float_representable(t.get<double>(i, x)) &&
-              gecko_test::float_representable(t.get<double>(i, y)) &&
-              gecko_test::float_representable(t.get<double>(i, z))))
-          return false;
-        // float R_D ~ z^(-3/2) must itself stay a normal float
-        return gecko_test::float_representable(gecko::carlson_rd<double>(in(i, x), in(i, y), in(i, z)));
-      });
+  const auto tally = gecko_test::kernel_tally<TestType>(
+      t, "carlson_rd", std::array<std::size_t, 3>{t.column("x"), t.column("y"), t.column("z")},
+      t.column("rd"), [](auto... a) { return gecko::carlson_rd(a...); },
+      [](std::size_t, const auto& ref) { return gecko_test::float_representable(ref()); });
   CHECK(tally.overall.worst <= 8);
 }
 

@@ -7,10 +7,9 @@
 #include <limits>
 #include <stdexcept>
 
-#include "elliptic/reference_table.hpp"
+#include "elliptic/typed_table.hpp"
 
 using gecko_test::reference_table;
-using gecko_test::tally_table;
 
 namespace {
 const reference_table& rf_table() {
@@ -20,46 +19,12 @@ const reference_table& rf_table() {
 constexpr long double pi_l = 3.141592653589793238462643383279502884L;
 }  // namespace
 
-TEST_CASE("carlson_rf: mpmath table, double: <= 3 eps") {
+// float: table inputs rounded to float, against double at the rounded inputs (see typed_table.hpp).
+TEMPLATE_TEST_CASE("carlson_rf: mpmath table: <= 3 eps", "[carlson_rf]", float, double, long double) {
   const auto& t = rf_table();
-  const auto x = t.column("x"), y = t.column("y"), z = t.column("z"), v = t.column("rf");
-  const auto tally = tally_table<double>(
-      t, "carlson_rf<double>",
-      [&](std::size_t i) {
-        return gecko::carlson_rf(t.get<double>(i, x), t.get<double>(i, y), t.get<double>(i, z));
-      },
-      [&](std::size_t i) { return t.value(i, v); }, [](std::size_t) { return true; });
-  CHECK(tally.overall.worst <= 3);
-}
-
-TEST_CASE("carlson_rf: mpmath table, long double: <= 3 eps") {
-  const auto& t = rf_table();
-  const auto x = t.column("x"), y = t.column("y"), z = t.column("z"), v = t.column("rf");
-  const auto tally = tally_table<long double>(
-      t, "carlson_rf<long double>",
-      [&](std::size_t i) {
-        return gecko::carlson_rf(t.get<long double>(i, x), t.get<long double>(i, y),
-                                 t.get<long double>(i, z));
-      },
-      [&](std::size_t i) { return t.value(i, v); }, [](std::size_t) { return true; });
-  CHECK(tally.overall.worst <= 3);
-}
-
-TEST_CASE("carlson_rf: table inputs rounded to float, against double: <= 3 eps(float)") {
-  const auto& t = rf_table();
-  const auto x = t.column("x"), y = t.column("y"), z = t.column("z");
-  auto in = [&](std::size_t i, std::size_t c) { return static_cast<float>(t.get<double>(i, c)); };
-  const auto tally = tally_table<float>(
-      t, "carlson_rf<float>",
-      [&](std::size_t i) { return gecko::carlson_rf(in(i, x), in(i, y), in(i, z)); },
-      [&](std::size_t i) {
-        return static_cast<long double>(gecko::carlson_rf<double>(in(i, x), in(i, y), in(i, z)));
-      },
-      [&](std::size_t i) {
-        return gecko_test::float_representable(t.get<double>(i, x)) &&
-               gecko_test::float_representable(t.get<double>(i, y)) &&
-               gecko_test::float_representable(t.get<double>(i, z));
-      });
+  const auto tally = gecko_test::kernel_tally<TestType>(
+      t, "carlson_rf", std::array<std::size_t, 3>{t.column("x"), t.column("y"), t.column("z")},
+      t.column("rf"), [](auto... a) { return gecko::carlson_rf(a...); });
   CHECK(tally.overall.worst <= 3);
 }
 
@@ -153,11 +118,13 @@ TEST_CASE("carlson_rf: precision policy trades error for fewer steps, error stay
 // Regression (seta stress campaign): the unchecked kernels are called from hot loops without
 // argument checks; two zero arguments used to keep the duplication test true forever. They must
 // now stop (bounded by detail::carlson_max_steps) and answer with a non-finite value.
-TEST_CASE("carlson unchecked kernels terminate on two zero arguments", "[carlson_rf][regression]") {
+TEMPLATE_TEST_CASE("carlson unchecked kernels terminate on two zero arguments", "[carlson_rf][regression]",
+                   float, double, long double) {
+  using T = TestType;
   using gecko::policies::default_policy;
-  CHECK_FALSE(std::isfinite(gecko::detail::carlson_rf_imp<double, default_policy>(0.0, 0.2, 0.0)));
-  CHECK_FALSE(std::isfinite(gecko::detail::carlson_rf_roots_imp<double, default_policy>(0.0, 0.2, 0.0, 0.0, std::sqrt(0.2), 0.0)));
-  CHECK_FALSE(std::isfinite(gecko::detail::carlson_rd_imp<double, default_policy>(0.0, 0.0, 0.2)));
-  CHECK_FALSE(std::isfinite(gecko::detail::carlson_rf_imp<float, default_policy>(0.0f, 0.2f, 0.0f)));
-  CHECK_FALSE(std::isfinite(gecko::detail::carlson_rf_imp<long double, default_policy>(0.0L, 0.2L, 0.0L)));
+  const T zero = 0, a = T(0.2);
+  CHECK_FALSE(std::isfinite(gecko::detail::carlson_rf_imp<T, default_policy>(zero, a, zero)));
+  CHECK_FALSE(std::isfinite(
+      gecko::detail::carlson_rf_roots_imp<T, default_policy>(zero, a, zero, zero, std::sqrt(a), zero)));
+  CHECK_FALSE(std::isfinite(gecko::detail::carlson_rd_imp<T, default_policy>(zero, zero, a)));
 }

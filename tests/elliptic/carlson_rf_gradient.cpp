@@ -13,7 +13,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "elliptic/reference_table.hpp"
+#include "elliptic/typed_table.hpp"
 
 using gecko_test::reference_table;
 using gecko_test::tally_table;
@@ -25,7 +25,7 @@ void check_value(long double bound) {
   const reference_table t("elliptic_rf.csv");
   const auto x = t.column("x"), y = t.column("y"), z = t.column("z"), v = t.column("rf");
   const auto tally = tally_table<T>(
-      t, std::string("carlson_rf_gradient.rf<") + (sizeof(T) == sizeof(double) ? "double" : "long double") + ">",
+      t, "carlson_rf_gradient.rf<" + gecko_test::scalar_name<T>() + ">",
       [&](std::size_t i) { return gecko::carlson_rf_gradient(t.get<T>(i, x), t.get<T>(i, y), t.get<T>(i, z)).rf; },
       [&](std::size_t i) { return t.value(i, v); }, [](std::size_t) { return true; });
   CHECK(tally.overall.worst <= bound);
@@ -37,7 +37,7 @@ void check_partial(int slot, long double bound) {
   const reference_table t("elliptic_rd.csv");
   const auto x = t.column("x"), y = t.column("y"), z = t.column("z"), v = t.column("rd");
   const auto tally = tally_table<T>(
-      t, std::string("carlson_rf_gradient.d") + "xyz"[slot] + (sizeof(T) == sizeof(double) ? "<double>" : "<long double>"),
+      t, std::string("carlson_rf_gradient.d") + "xyz"[slot] + "<" + gecko_test::scalar_name<T>() + ">",
       [&](std::size_t i) {
         const T a = t.get<T>(i, x), b = t.get<T>(i, y), c = t.get<T>(i, z);
         if (slot == 0) return -6 * gecko::carlson_rf_gradient(c, a, b).dx;  // -R_D(a, b, c)/6
@@ -50,16 +50,14 @@ void check_partial(int slot, long double bound) {
 
 }  // namespace
 
-TEST_CASE("carlson_rf_gradient: value against the mpmath R_F table") {
-  check_value<double>(3);
-  check_value<long double>(3);
+TEMPLATE_TEST_CASE("carlson_rf_gradient: value against the mpmath R_F table", "[carlson_rf_gradient]", double,
+                   long double) {
+  check_value<TestType>(3);
 }
 
-TEST_CASE("carlson_rf_gradient: each partial against the mpmath R_D table (DLMF 19.18.1)") {
-  for (int slot = 0; slot < 3; ++slot) {
-    check_partial<double>(slot, 5);
-    check_partial<long double>(slot, 5);
-  }
+TEMPLATE_TEST_CASE("carlson_rf_gradient: each partial against the mpmath R_D table (DLMF 19.18.1)",
+                   "[carlson_rf_gradient]", double, long double) {
+  for (int slot = 0; slot < 3; ++slot) check_partial<TestType>(slot, 5);
 }
 
 TEST_CASE("carlson_rf_gradient: agrees with central differences at random states") {

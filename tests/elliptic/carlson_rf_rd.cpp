@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "elliptic/reference_table.hpp"
+#include "elliptic/typed_table.hpp"
 
 using gecko_test::reference_table;
 using gecko_test::tally_table;
@@ -16,7 +16,7 @@ void check_fused(const char* table, const char* column, bool want_rf, long doubl
   const reference_table t(table);
   const auto x = t.column("x"), y = t.column("y"), z = t.column("z"), v = t.column(column);
   const auto tally = tally_table<T>(
-      t, std::string("carlson_rf_rd_imp<") + (sizeof(T) == sizeof(double) ? "double" : "long double") + ">." + column,
+      t, "carlson_rf_rd_imp<" + gecko_test::scalar_name<T>() + ">." + column,
       [&](std::size_t i) {
         const auto r = gecko::detail::carlson_rf_rd_imp<T>(t.get<T>(i, x), t.get<T>(i, y), t.get<T>(i, z));
         return want_rf ? r.rf : r.rd;
@@ -28,11 +28,10 @@ void check_fused(const char* table, const char* column, bool want_rf, long doubl
 }
 }  // namespace
 
-TEST_CASE("carlson_rf_rd: fused kernel against the R_F and R_D tables") {
-  check_fused<double>("elliptic_rf.csv", "rf", true, 3);
-  check_fused<double>("elliptic_rd.csv", "rd", false, 8);
-  check_fused<long double>("elliptic_rf.csv", "rf", true, 3);
-  check_fused<long double>("elliptic_rd.csv", "rd", false, 8);
+TEMPLATE_TEST_CASE("carlson_rf_rd: fused kernel against the R_F and R_D tables", "[carlson_rf_rd]", double,
+                   long double) {
+  check_fused<TestType>("elliptic_rf.csv", "rf", true, 3);
+  check_fused<TestType>("elliptic_rd.csv", "rd", false, 8);
 }
 
 TEST_CASE("carlson_rf_rd: precision policy bounds both results") {

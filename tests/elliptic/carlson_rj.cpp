@@ -6,28 +6,17 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
+#include <type_traits>
 
-#include "elliptic/reference_table.hpp"
+#include "elliptic/typed_table.hpp"
 
 using gecko_test::reference_table;
-using gecko_test::tally_table;
 
 namespace {
 const reference_table& rj_table() {
   static const reference_table t("elliptic_rj.csv");
   return t;
-}
-template <class T>
-gecko_test::error_tally rj_tally(const char* what) {
-  const auto& t = rj_table();
-  const auto x = t.column("x"), y = t.column("y"), z = t.column("z"), p = t.column("p"),
-             v = t.column("rj");
-  return tally_table<T>(
-      t, what,
-      [&](std::size_t i) {
-        return gecko::carlson_rj(t.get<T>(i, x), t.get<T>(i, y), t.get<T>(i, z), t.get<T>(i, p));
-      },
-      [&](std::size_t i) { return t.value(i, v); }, [](std::size_t) { return true; });
 }
 }  // namespace
 
@@ -38,8 +27,6 @@ template <class T>
 void check_rj(const char* what) {
   const auto& t = rj_table();
   const auto cancel = t.column("pv_cancel"), region = t.column("region");
-  const auto tally = rj_tally<T>(what);
-  (void)tally;
   const auto x = t.column("x"), y = t.column("y"), z = t.column("z"), p = t.column("p"),
              v = t.column("rj");
   long double worst_plain = 0, worst_pv_ratio = 0;
@@ -58,33 +45,24 @@ void check_rj(const char* what) {
   CHECK(worst_pv_ratio <= 1);
 }
 
-TEST_CASE("carlson_rj: mpmath table, double: <= 8 eps (p.v.: 8 eps x cancellation)") {
-  check_rj<double>("carlson_rj<double>");
-}
-
-TEST_CASE("carlson_rj: mpmath table, long double: <= 8 eps (p.v.: 8 eps x cancellation)") {
-  check_rj<long double>("carlson_rj<long double>");
-}
-
-TEST_CASE("carlson_rj: table inputs rounded to float, against double") {
-  const auto& t = rj_table();
-  const auto x = t.column("x"), y = t.column("y"), z = t.column("z"), p = t.column("p");
-  auto in = [&](std::size_t i, std::size_t c) { return static_cast<float>(t.get<double>(i, c)); };
-  auto ref = [&](std::size_t i) {
-    return gecko::carlson_rj<double>(in(i, x), in(i, y), in(i, z), in(i, p));
-  };
-  const auto tally = tally_table<float>(
-      t, "carlson_rj<float>",
-      [&](std::size_t i) { return gecko::carlson_rj(in(i, x), in(i, y), in(i, z), in(i, p)); },
-      [&](std::size_t i) { return static_cast<long double>(ref(i)); },
-      [&](std::size_t i) {
-        return t.get<double>(i, p) > 0 && gecko_test::float_representable(t.get<double>(i, x)) &&
-               gecko_test::float_representable(t.get<double>(i, y)) &&
-               gecko_test::float_representable(t.get<double>(i, z)) &&
-               gecko_test::float_representable(t.get<double>(i, p)) &&
-               gecko_test::float_representable(ref(i));
-      });
-  CHECK(tally.overall.worst <= 8);
+// float: table inputs rounded to float, p > 0 only, against double at the rounded inputs (see
+// typed_table.hpp), <= 8 eps(float).
+TEMPLATE_TEST_CASE("carlson_rj: mpmath table: <= 8 eps (p.v.: 8 eps x cancellation)", "[carlson_rj]", float,
+                   double, long double) {
+  const std::string what = "carlson_rj<" + gecko_test::scalar_name<TestType>() + ">";
+  if constexpr (std::is_same<TestType, float>::value) {
+    const auto& t = rj_table();
+    const auto p = t.column("p");
+    const auto tally = gecko_test::kernel_tally<float>(
+        t, "carlson_rj", std::array<std::size_t, 4>{t.column("x"), t.column("y"), t.column("z"), p},
+        t.column("rj"), [](auto... a) { return gecko::carlson_rj(a...); },
+        [&](std::size_t i, const auto& ref) {
+          return t.get<double>(i, p) > 0 && gecko_test::float_representable(ref());
+        });
+    CHECK(tally.overall.worst <= 8);
+  } else {
+    check_rj<TestType>(what.c_str());
+  }
 }
 
 TEST_CASE("carlson_rj: special values and identities") {

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "elliptic/legendre_support.hpp"
+#include "elliptic/typed_table.hpp"
 
 using gecko_test::legendre_tally;
 
@@ -16,21 +17,10 @@ const double pio2 = 1.5707963267948966;
 const double pi_d = 3.141592653589793;
 }  // namespace
 
-TEST_CASE("ellint_e: mpmath table, double: <= 8 eps") {
-  const auto tally = legendre_tally<double>(
-      "E", "ellint_e<double>", [](auto phi, auto m) { return gecko::ellint_e(phi, m); });
-  CHECK(tally.overall.worst <= 8);
-}
-
-TEST_CASE("ellint_e: mpmath table, long double: <= 8 eps") {
-  const auto tally = legendre_tally<long double>(
-      "E", "ellint_e<long double>", [](auto phi, auto m) { return gecko::ellint_e(phi, m); });
-  CHECK(tally.overall.worst <= 8);
-}
-
-TEST_CASE("ellint_e: table inputs rounded to float, against double: <= 8 eps(float)") {
-  const auto tally = legendre_tally<float>(
-      "E", "ellint_e<float>", [](auto phi, auto m) { return gecko::ellint_e(phi, m); });
+// float: table inputs rounded to float, against double at the rounded inputs (legendre_tally).
+TEMPLATE_TEST_CASE("ellint_e: mpmath table: <= 8 eps", "[ellint_e]", float, double, long double) {
+  const auto tally = legendre_tally<TestType>("E", "ellint_e<" + gecko_test::scalar_name<TestType>() + ">",
+                                              [](auto phi, auto m) { return gecko::ellint_e(phi, m); });
   CHECK(tally.overall.worst <= 8);
 }
 

@@ -7,45 +7,31 @@
 #include <cmath>
 #include <limits>
 
-#include "elliptic/reference_table.hpp"
+#include "elliptic/typed_table.hpp"
 
 using gecko_test::reference_table;
-using gecko_test::tally_table;
 
 namespace {
 const reference_table& complete_table() {
   static const reference_table t("elliptic_complete.csv");
   return t;
 }
-template <class T>
-void check_ek(const char* name, long double boundE, long double boundK) {
-  const auto& t = complete_table();
-  const auto m = t.column("m"), vE = t.column("E"), vK = t.column("K");
-  const bool is_float = sizeof(T) == sizeof(float);
-  auto use = [&](std::size_t i) {
-    return !is_float || (gecko_test::float_representable(t.get<double>(i, m)) && t.get<float>(i, m) < 1);
-  };
-  CHECK(tally_table<T>(
-            t, std::string(name) + ".E", [&](std::size_t i) { return gecko::ellint_ek(t.get<T>(i, m)).E; },
-            [&](std::size_t i) -> long double {
-              return is_float ? gecko::ellint_ek<double>(t.get<T>(i, m)).E : t.value(i, vE);
-            },
-            use)
-            .overall.worst <= boundE);
-  CHECK(tally_table<T>(
-            t, std::string(name) + ".K", [&](std::size_t i) { return gecko::ellint_ek(t.get<T>(i, m)).K; },
-            [&](std::size_t i) -> long double {
-              return is_float ? gecko::ellint_ek<double>(t.get<T>(i, m)).K : t.value(i, vK);
-            },
-            use)
-            .overall.worst <= boundK);
-}
 }  // namespace
 
-TEST_CASE("ellint_ek: mpmath table: E <= 8 eps, K <= 3 eps") {
-  check_ek<double>("ellint_ek<double>", 8, 3);
-  check_ek<long double>("ellint_ek<long double>", 8, 3);
-  check_ek<float>("ellint_ek<float>", 8, 3);
+// float: table inputs rounded to float (and still below 1), against double at the rounded
+// inputs (see typed_table.hpp).
+TEMPLATE_TEST_CASE("ellint_ek: mpmath table: E <= 8 eps, K <= 3 eps", "[ellint_ek]", float, double, long double) {
+  const auto& t = complete_table();
+  const auto m = t.column("m");
+  auto below_one = [&](std::size_t i, const auto&) { return t.get<float>(i, m) < 1; };
+  CHECK(gecko_test::kernel_tally<TestType>(
+            t, "ellint_ek.E", std::array<std::size_t, 1>{m}, t.column("E"),
+            [](auto mm) { return gecko::ellint_ek(mm).E; }, below_one)
+            .overall.worst <= 8);
+  CHECK(gecko_test::kernel_tally<TestType>(
+            t, "ellint_ek.K", std::array<std::size_t, 1>{m}, t.column("K"),
+            [](auto mm) { return gecko::ellint_ek(mm).K; }, below_one)
+            .overall.worst <= 3);
 }
 
 TEST_CASE("ellint_ek: Legendre's relation E K' + E' K - K K' = pi/2") {

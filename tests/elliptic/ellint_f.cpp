@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "elliptic/legendre_support.hpp"
+#include "elliptic/typed_table.hpp"
 
 using gecko_test::legendre_tally;
 
@@ -16,25 +17,14 @@ const double pio2 = 1.5707963267948966;  // the double just below pi/2
 const double pi_d = 3.141592653589793;
 }  // namespace
 
-TEST_CASE("ellint_f: mpmath table, double: <= 3 eps (+ conditioning at the m > 1 edge)") {
+// float: table inputs rounded to float, against double at the rounded inputs (legendre_tally).
+TEMPLATE_TEST_CASE("ellint_f: mpmath table: <= 3 eps (+ conditioning at the m > 1 edge)", "[ellint_f]", float,
+                   double, long double) {
   auto F = [](auto phi, auto m) { return gecko::ellint_f(phi, m); };
-  const auto tally = legendre_tally<double>("F", "ellint_f<double>", F, false);
+  const auto tally =
+      legendre_tally<TestType>("F", "ellint_f<" + gecko_test::scalar_name<TestType>() + ">", F, false);
   CHECK(tally.overall.worst <= 3);
-  CHECK(gecko_test::legendre_edge_excess<double>("F", 3, F) <= 1);
-}
-
-TEST_CASE("ellint_f: mpmath table, long double: <= 3 eps (+ conditioning at the m > 1 edge)") {
-  auto F = [](auto phi, auto m) { return gecko::ellint_f(phi, m); };
-  const auto tally = legendre_tally<long double>("F", "ellint_f<long double>", F, false);
-  CHECK(tally.overall.worst <= 3);
-  CHECK(gecko_test::legendre_edge_excess<long double>("F", 3, F) <= 1);
-}
-
-TEST_CASE("ellint_f: table inputs rounded to float, against double: <= 3 eps(float)") {
-  auto F = [](auto phi, auto m) { return gecko::ellint_f(phi, m); };
-  const auto tally = legendre_tally<float>("F", "ellint_f<float>", F, false);
-  CHECK(tally.overall.worst <= 3);
-  CHECK(gecko_test::legendre_edge_excess<float>("F", 3, F) <= 1);
+  CHECK(gecko_test::legendre_edge_excess<TestType>("F", 3, F) <= 1);
 }
 
 TEST_CASE("ellint_f: special values") {

@@ -5,10 +5,9 @@
 #include <cmath>
 #include <limits>
 
-#include "elliptic/reference_table.hpp"
+#include "elliptic/typed_table.hpp"
 
 using gecko_test::reference_table;
-using gecko_test::tally_table;
 
 namespace {
 const reference_table& complete_table() {
@@ -17,24 +16,15 @@ const reference_table& complete_table() {
 }
 }  // namespace
 
-TEST_CASE("ellint_k: mpmath table: <= 3 eps (double, long double, float)") {
+// float: table inputs rounded to float (and still below 1), against double at the rounded
+// inputs (see typed_table.hpp).
+TEMPLATE_TEST_CASE("ellint_k: mpmath table: <= 3 eps", "[ellint_k]", float, double, long double) {
   const auto& t = complete_table();
-  const auto m = t.column("m"), v = t.column("K");
-  auto all = [](std::size_t) { return true; };
-  CHECK(tally_table<double>(t, "ellint_k<double>",
-                            [&](std::size_t i) { return gecko::ellint_k(t.get<double>(i, m)); },
-                            [&](std::size_t i) { return t.value(i, v); }, all)
-            .overall.worst <= 3);
-  CHECK(tally_table<long double>(t, "ellint_k<long double>",
-                                 [&](std::size_t i) { return gecko::ellint_k(t.get<long double>(i, m)); },
-                                 [&](std::size_t i) { return t.value(i, v); }, all)
-            .overall.worst <= 3);
-  CHECK(tally_table<float>(
-            t, "ellint_k<float>", [&](std::size_t i) { return gecko::ellint_k(t.get<float>(i, m)); },
-            [&](std::size_t i) { return static_cast<long double>(gecko::ellint_k<double>(t.get<float>(i, m))); },
-            [&](std::size_t i) {
-              return gecko_test::float_representable(t.get<double>(i, m)) && t.get<float>(i, m) < 1;
-            })
+  const auto m = t.column("m");
+  CHECK(gecko_test::kernel_tally<TestType>(
+            t, "ellint_k", std::array<std::size_t, 1>{m}, t.column("K"),
+            [](auto mm) { return gecko::ellint_k(mm); },
+            [&](std::size_t i, const auto&) { return t.get<float>(i, m) < 1; })
             .overall.worst <= 3);
 }
 

@@ -10,8 +10,9 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 
-#include "elliptic/reference_table.hpp"
+#include "elliptic/typed_table.hpp"
 
 namespace {
 
@@ -31,22 +32,17 @@ gecko_test::error_tally corner_tally(const char* which, const char* what, Fn fn)
 
 }  // namespace
 
-TEST_CASE("ellint_f, ellint_e at phi -> pi/2, m -> 1: <= 3 eps against mpmath (double)", "[elliptic][near_singular]") {
-  const auto f = corner_tally<double>("F", "ellint_f<double> near (pi/2, 1)",
-                                      [](double p, double m) { return gecko::ellint_f(p, m); });
+// float is left out: the table's inputs sit within ulps(double) of the corner, which float
+// rounding would move onto the seam or the pole.
+TEMPLATE_TEST_CASE("ellint_f, ellint_e at phi -> pi/2, m -> 1: <= 3 eps against mpmath", "[elliptic][near_singular]",
+                   double, long double) {
+  const std::string type = "<" + gecko_test::scalar_name<TestType>() + "> near (pi/2, 1)";
+  const auto f = corner_tally<TestType>("F", ("ellint_f" + type).c_str(),
+                                        [](auto p, auto m) { return gecko::ellint_f(p, m); });
   CHECK(f.overall.worst <= 3);
   CHECK(f.overall.count > 1300);
-  const auto e = corner_tally<double>("E", "ellint_e<double> near (pi/2, 1)",
-                                      [](double p, double m) { return gecko::ellint_e(p, m); });
-  CHECK(e.overall.worst <= 3);
-}
-
-TEST_CASE("ellint_f, ellint_e at phi -> pi/2, m -> 1: <= 3 eps against mpmath (long double)", "[elliptic][near_singular]") {
-  const auto f = corner_tally<long double>("F", "ellint_f<long double> near (pi/2, 1)",
-                                           [](long double p, long double m) { return gecko::ellint_f(p, m); });
-  CHECK(f.overall.worst <= 3);
-  const auto e = corner_tally<long double>("E", "ellint_e<long double> near (pi/2, 1)",
-                                           [](long double p, long double m) { return gecko::ellint_e(p, m); });
+  const auto e = corner_tally<TestType>("E", ("ellint_e" + type).c_str(),
+                                        [](auto p, auto m) { return gecko::ellint_e(p, m); });
   CHECK(e.overall.worst <= 3);
 }
 

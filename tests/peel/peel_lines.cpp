@@ -2,25 +2,29 @@
 // the inextensible limit, and report their ranges.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "gecko/peel.hpp"
 
-TEST_CASE("Kendall and Rivlin lines satisfy eq 17", "[peel]") {
-  for (double Ft : {-0.4, 0.0, 0.5, 2.0, 7.5, 9.99}) {
-    const double w = 1.0, EA = 50.0;
-    const double fk = gecko::kendall_fn(Ft, EA, w);
-    const double N2 = fk * fk + Ft * Ft;
-    CHECK(std::fabs(std::sqrt(N2) + N2 / (2 * EA) - Ft - w) < 4e-15 * (Ft + w + 1));
+TEMPLATE_TEST_CASE("Kendall and Rivlin lines satisfy eq 17", "[peel]", float, double, long double) {
+  using T = TestType;
+  const T eps = std::numeric_limits<T>::epsilon();
+  for (T Ft : {T(-0.4), T(0.0), T(0.5), T(2.0), T(7.5), T(9.99)}) {
+    const T w = 1, EA = 50;
+    const T fk = gecko::kendall_fn(Ft, EA, w);
+    const T N2 = fk * fk + Ft * Ft;
+    CHECK(std::fabs(std::sqrt(N2) + N2 / (2 * EA) - Ft - w) < 18 * eps * (Ft + w + 1));
     CHECK(fk <= 0);
-    const double fr = gecko::rivlin_fn(Ft, w);
-    CHECK(std::fabs(std::hypot(fr, Ft) - Ft - w) < 4e-15 * (std::fabs(Ft) + w));
-    CHECK(gecko::kendall_fn(Ft, std::numeric_limits<double>::infinity(), w) == Approx(fr).epsilon(1e-15));
-    CHECK(gecko::kendall_fn(Ft, 1e14, w) == Approx(fr).epsilon(1e-12));
+    const T fr = gecko::rivlin_fn(Ft, w);
+    CHECK(std::fabs(std::hypot(fr, Ft) - Ft - w) < 18 * eps * (std::fabs(Ft) + w));
+    CHECK(gecko::kendall_fn(Ft, std::numeric_limits<T>::infinity(), w) == Approx(fr).epsilon(4.5 * eps));
+    // the line moves by O(w / EA) = 1e-14 relative: below eps(float), so float gets its rounding
+    CHECK(gecko::kendall_fn(Ft, T(1e14), w) == Approx(fr).epsilon(std::max<double>(1e-12, 8 * eps)));
   }
-  // Kendall's line ends at (Ft)max = sqrt(2 EA w) with Fn = 0.
-  CHECK(gecko::kendall_fn(10.0, 50.0, 1.0) == Approx(0.0).margin(1e-7));
+  // Kendall's line ends at (Ft)max = sqrt(2 EA w) with Fn = 0; Fn ~ sqrt(rounding) there.
+  CHECK(gecko::kendall_fn(T(10), T(50), T(1)) == Approx(0.0).margin(6 * std::sqrt(eps)));
 }
 
 TEST_CASE("peel lines: bad input names the parameter", "[peel][errors]") {

@@ -70,7 +70,10 @@ def test_run_no_figures_and_quiet(tmp_path, capsys):
 def test_figures_list_and_only(tmp_path, capsys):
     assert main(["figures", "--list"]) == 0
     names = capsys.readouterr().out.split()
-    assert len(names) == 15 and "seta_fig2a_axial_stiffness" in names and "friction_fig8_seta_force_space" in names
+    import gecko.scene
+    shipped = sorted(p.stem for p in (Path(gecko.scene.__file__).parent / "figures").glob("*.toml"))
+    assert sorted(names) == shipped and len(shipped) >= 16
+    assert "seta_fig2a_axial_stiffness" in names and "friction_fig8_seta_force_space" in names
     assert main(["figures", "--only", "friction_fig8_seta_force_space", "--out", str(tmp_path), "-q"]) == 0
     assert (tmp_path / "friction_fig8.png").is_file()
     assert main(["figures", "--only", "fig99", "--out", str(tmp_path)]) == 2

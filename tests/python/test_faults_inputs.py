@@ -37,6 +37,8 @@ def test_the_one_checker(value, exc, why):
     (lambda v: elliptic.carlson_rf(1.0, v, 2.0), "y"),
     (lambda v: seta.kendall_fn(v, 50.0, 1.0), "Ft"),
     (lambda v: gecko.TwoLevelSeta().critical_line(v), "Ft"),
+    (lambda v: gecko.TwoLevelSeta().contact_state(v, 0.0), "Fn"),
+    (lambda v: gecko.TwoLevelSeta().small_deformation_fn(v), "Ft"),
     (lambda v: friction.viscoelastic_detachment(v, 1.0, 1.0, 0.5), "V"),
     (lambda v: friction.parabolic_beam_compliance(1.0, v), "EI"),
 ])

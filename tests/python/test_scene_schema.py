@@ -19,8 +19,8 @@ def test_packaged_figures_are_the_examples():
     packaged = {p.name: p.read_text(encoding="utf-8") for p in figure_scenes()}
     in_repo = {p.name: p.read_text(encoding="utf-8") for p in EXAMPLES.glob("*.toml")}
     assert packaged == in_repo, "examples/*.toml and python/gecko/scene/figures/*.toml must be identical"
-    assert len(packaged) == 15  # 9 seta-paper figures, 3 friction-paper figures, the README demo,
-    # a design sweep and a design optimisation
+    assert len(packaged) == 16  # 9 seta-paper figures, 3 friction-paper figures, the README demo,
+    # a design sweep, a design optimisation and the contact-length contours of the forward problem
 
 
 @pytest.mark.parametrize("path", sorted(EXAMPLES.rglob("*.toml")), ids=lambda p: p.stem)

@@ -107,7 +107,8 @@ def test_status_enums_are_int_enums_with_the_display_tables_keyed_by_them():
     assert set(seta._LINE_END) == set(LineEnd)
     assert {MinimumStatus(k).name: v for k, v in seta._MIN_STATUS.items()} == {
         m.name: m.name for m in MinimumStatus}
-    assert [m.name for m in gecko.FitStatus] == ["converged", "max_iterations", "singular"]
+    assert [m.name for m in gecko.FitStatus] == ["converged", "max_iterations", "singular",
+                                                 "not_identifiable", "no_progress", "non_finite"]
     for name in ("CriticalStatus", "LineEnd", "MinimumStatus", "SetaDesign", "DESIGN_FIELDS"):
         assert name in gecko.__all__ and hasattr(gecko, name)
     assert _core.CriticalStatus is CriticalStatus

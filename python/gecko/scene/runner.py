@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import csv
 import io
-import math
 import os
 import shutil
 import time
@@ -19,11 +18,12 @@ from typing import Any, Dict, List, Optional, Sequence
 import numpy as np
 
 from ..progress import Progress  # noqa: F401  (moved to gecko.progress; old name kept)
-from ..seta import DESIGN_FIELDS, CriticalStatus
+from ..seta import DESIGN_FIELDS
+from .adapters import ADAPTERS, _design, _grid, _key, _seta  # noqa: F401  (the kernels' helpers, moved)
 from .errors import SceneError
 from .models import CHARACTERISTIC_LABELS
 from .planner import Plan, Step, plan_scene
-from .schema import DEFAULT_GRIDS, Point, Scene, Study, eval_grid, load_scene
+from .schema import Point, Scene, Study, load_scene
 
 #: the two-level seta design fields (from the bound C++ design type)
 SETA_FIELDS = DESIGN_FIELDS
@@ -134,32 +134,7 @@ class Cache(dict):
         self.misses = 0
 
 
-def _key(*parts) -> tuple:
-    out = []
-    for p in parts:
-        if isinstance(p, np.ndarray):
-            out.append((p.shape, p.tobytes()))
-        elif isinstance(p, dict):
-            out.append(tuple(sorted((k, _key(v)) for k, v in p.items())))
-        elif isinstance(p, (list, tuple)):
-            out.append(tuple(_key(v) for v in p))
-        else:
-            out.append(p)
-    return tuple(out)
-
-
 # ---- kernels ------------------------------------------------------------------------------------
-
-def _seta(values):
-    from ..seta import TwoLevelSeta
-    return TwoLevelSeta(**{k: values[k] for k in SETA_FIELDS})
-
-
-def _grid(study: Study, point: Point, output: str, res: float) -> np.ndarray:
-    spec = study.outputs[output].options.get("grid") or DEFAULT_GRIDS[output]
-    gkey = study.outputs[output].options.get("grid_key", "Ft")
-    return eval_grid(spec, study.env(point), f"{study.key}.outputs.{output}.{gkey}", res)
-
 
 class _Executor:
     def __init__(self, scene: Scene, cache: Cache, progress: Progress, threads: int):
@@ -177,252 +152,7 @@ class _Executor:
 
     def run(self, step: Step) -> None:
         st = self.scene.study(step.study)
-        getattr(self, "k_" + step.kernel)(st, step)
-
-    # two-level seta and single fiber ----------------------------------------------------------
-    def k_critical_line(self, st: Study, step: Step) -> None:
-        res = self.scene.resolution
-        m = st.model.name
-        if m == "two_level_seta":
-            from ..seta import critical_line_batch
-            groups: Dict[tuple, List[Point]] = {}
-            grids: Dict[tuple, np.ndarray] = {}
-            for i in step.points:
-                p = st.points[i]
-                g = _grid(st, p, "critical_line", res)
-                groups.setdefault(_key(g), []).append(p)
-                grids[_key(g)] = g
-            for gk, pts in groups.items():
-                g = grids[gk]
-                todo = list({_design(p): p for p in pts if ("line", _design(p), gk) not in self.cache}.values())
-                self.cache.hits += len(pts) - len(todo)
-                if todo:
-                    designs = np.array([[p.values[f] for f in SETA_FIELDS] for p in todo])
-                    self.cache.misses += len(todo)
-                    line = critical_line_batch(designs, g, threads=self.threads, errors="nan")
-                    for j, p in enumerate(todo):
-                        self.cache[("line", _design(p), gk)] = {
-                            "Ft": g, "Fn": line.Fn[j].copy(), "status": line.status[j].copy(),
-                            "theta_joint": line.theta_joint[j].copy()}
-                for p in pts:
-                    self.data[st.name][p.index]["critical_line"] = self.cache[("line", _design(p), gk)]
-                    self.progress.advance(1, st.name)
-        elif m == "single_fiber":
-            from ..seta import SingleFiber
-            for i in step.points:
-                p = st.points[i]
-                g = _grid(st, p, "critical_line", res)
-
-                def fn():
-                    f = SingleFiber(**{k: p.values[k] for k in ("EI", "EA", "l", "alpha", "w")})
-                    line = f.critical_line(g, errors="nan")
-                    return {"Ft": g, "Fn": line.Fn, "status": line.status}
-                self.data[st.name][i]["critical_line"] = self.cached(("fiber_line", _design(p), _key(g)), fn)
-                self.progress.advance(1, st.name)
-        else:  # kendall, rivlin: closed forms
-            from ..seta import kendall_fn, rivlin_fn
-            for i in step.points:
-                p = st.points[i]
-                g = _grid(st, p, "critical_line", res)
-                if m == "kendall":
-                    Fn = kendall_fn(g, p.values["EA"], p.values["w"], errors="nan")
-                else:
-                    Fn = rivlin_fn(g, p.values["w"], errors="nan")
-                Fn = np.atleast_1d(np.asarray(Fn, dtype=np.float64))
-                self.data[st.name][i]["critical_line"] = {"Ft": g, "Fn": Fn,
-                                                          "status": np.where(np.isfinite(Fn), CriticalStatus.converged,
-                                                                             CriticalStatus.invalid_input)}
-                self.progress.advance(1, st.name)
-
-    def k_fn0_from_line(self, st: Study, step: Step) -> None:
-        for i in step.points:
-            line = self.data[st.name][i]["critical_line"]
-            self.data[st.name][i].setdefault("characteristics", {})["fn0"] = float(line["Fn"][0])
-
-    def k_fn0(self, st: Study, step: Step) -> None:
-        if st.model.name == "single_fiber":
-            from ..seta import SingleFiber
-            for i in step.points:
-                p = st.points[i]
-
-                def fn():
-                    f = SingleFiber(**{k: p.values[k] for k in ("EI", "EA", "l", "alpha", "w")})
-                    return float(f.critical_line(np.zeros(1), errors="nan").Fn[0])
-                self.data[st.name][i].setdefault("characteristics", {})["fn0"] = self.cached(("fiber_fn0", _design(p)), fn)
-                self.progress.advance(1, st.name)
-            return
-        from ..seta import critical_line_batch
-        pts = [st.points[i] for i in step.points]
-        todo = list({_design(p): p for p in pts if ("fn0", _design(p)) not in self.cache}.values())
-        self.cache.hits += len(pts) - len(todo)
-        if todo:
-            designs = np.array([[p.values[f] for f in SETA_FIELDS] for p in todo])
-            line = critical_line_batch(designs, np.zeros(1), threads=self.threads, errors="nan")
-            self.cache.misses += len(todo)
-            for j, p in enumerate(todo):
-                self.cache[("fn0", _design(p))] = float(line.Fn[j, 0])
-        for p in pts:
-            self.data[st.name][p.index].setdefault("characteristics", {})["fn0"] = self.cache[("fn0", _design(p))]
-            self.progress.advance(1, st.name)
-
-    def k_characteristics(self, st: Study, step: Step) -> None:
-        if st.model.name in ("kendall", "rivlin"):
-            for i in step.points:
-                p = st.points[i]
-                self.data[st.name][i].setdefault("characteristics", {}).update(
-                    self.cached(("peel_chars", st.model.name, _design(p)), lambda: _peel_characteristics(st.model.name, p.values)))
-                self.progress.advance(1, st.name)
-            return
-        for i in step.points:
-            p = st.points[i]
-
-            def fn():
-                c = _seta(p.values).characteristics()
-                k = c.slope_k
-                return {"fn0": c.fn0, "slope_k": k, "abs_slope_k": abs(k),
-                        "inv_abs_k": 1.0 / abs(k) if k != 0 else math.inf,
-                        "max_pull_off": c.max_pull_off, "ft_at_max_pull_off": c.ft_at_min_fn,
-                        "min_fn": c.min_fn, "ft_max": c.ft_max, "sticky_at_rest": bool(c.sticky_at_rest),
-                        "ft_at_line_end": c.ft_at_line_end, "fn_at_line_end": c.fn_at_line_end,
-                        "line_end": c.end, "folds": list(c.folds)}
-            self.data[st.name][i].setdefault("characteristics", {}).update(self.cached(("chars", _design(p)), fn))
-            self.progress.advance(1, st.name)
-
-    def k_small_deformation(self, st: Study, step: Step) -> None:
-        res = self.scene.resolution
-        for i in step.points:
-            p = st.points[i]
-            d = self.cached(("small", _design(p)), lambda: _seta(p.values).small_deformation())
-            k = d["slope_k"]
-            small = {"small_fn0": d["fn0"], "small_slope_k": k, "small_abs_slope_k": abs(k),
-                     "small_inv_abs_k": 1.0 / abs(k) if k != 0 else math.inf,
-                     "small_contact_length": d["contact_length"], "small_non_sticky": bool(d["non_sticky"])}
-            self.data[st.name][i].setdefault("characteristics", {}).update(small)
-            if "linear_line" in st.outputs:
-                g = _grid(st, p, "linear_line", res)
-                self.data[st.name][i]["linear_line"] = {"Ft": g, "Fn": d["fn0"] + k * g}
-            self.progress.advance(1, st.name)
-
-    def k_shapes(self, st: Study, step: Step) -> None:
-        opts = st.outputs["shapes"].options
-        steps = opts["points"] - 1
-        for i in step.points:
-            p = st.points[i]
-            g = eval_grid(opts["grid"], st.env(p), f"{st.key}.outputs.shapes.Ft", 1.0)
-
-            def fn():
-                seta = _seta(p.values)
-                shapes = [seta.shape(float(ft), steps) for ft in g]
-                return {"Ft": g, "Fn": np.array([float(d["Fn"]) for d in shapes]),
-                        "x": [np.asarray(d["x"]) for d in shapes], "z": [np.asarray(d["z"]) for d in shapes],
-                        "closing_error": np.array([float(d["closing_error"]) for d in shapes]),
-                        "status": np.array([int(d["status"]) for d in shapes])}
-            self.data[st.name][i]["shapes"] = self.cached(("shapes", _design(p), _key(g), steps), fn)
-            self.progress.advance(1, st.name)
-
-    def k_sensitivities(self, st: Study, step: Step) -> None:
-        from ..seta import TwoLevelSeta
-        if not hasattr(TwoLevelSeta, "sensitivities"):  # an older build of gecko
-            raise SceneError("sensitivities need gecko.TwoLevelSeta.sensitivities, which this build of gecko "
-                             "does not have", key=f"{st.key}.outputs.sensitivities")
-        opts = st.outputs["sensitivities"].options
-        for i in step.points:
-            p = st.points[i]
-            g = _grid(st, p, "sensitivities", self.scene.resolution)
-
-            def fn():
-                r = _seta(p.values).sensitivities(g)
-                dFn = np.asarray(r["dFn"]).reshape(g.size, len(SETA_FIELDS))
-                names = list(r.get("parameters", SETA_FIELDS))
-                return {"Ft": g, "dFn": {f: dFn[:, names.index(f)] for f in SETA_FIELDS},
-                        "status": np.asarray(r["status"])}
-            d = self.cached(("sens", _design(p), _key(g)), fn)
-            self.data[st.name][i]["sensitivities"] = {"Ft": d["Ft"], "dFn": {k: d["dFn"][k] for k in opts["wrt"]}}
-            self.progress.advance(1, st.name)
-
-    def k_contact_contours(self, st: Study, step: Step) -> None:
-        opts = st.outputs["contact_contours"].options
-        res = self.scene.resolution
-        for i in step.points:
-            p = st.points[i]
-            key = f"{st.key}.outputs.contact_contours"
-            gn = eval_grid(opts["Fn"], st.env(p), f"{key}.Fn", res)
-            gt = eval_grid(opts["Ft"], st.env(p), f"{key}.Ft", res)
-
-            def fn():
-                # rows: Ft, columns: Fn (one row of the contour is one Ft)
-                r = _seta(p.values).contact_state(gn[None, :], gt[:, None], errors="nan", threads=self.threads)
-                return {"Fn": gn, "Ft": gt, "a": r.a, "status": r.status, "equilibria": r.equilibria}
-            self.data[st.name][i]["contact_contours"] = self.cached(("contact", _design(p), _key(gn), _key(gt)), fn)
-            self.progress.advance(1, st.name)
-
-    # frictional adhesion --------------------------------------------------------------------------
-    def k_force_trace(self, st: Study, step: Step) -> None:
-        from ..friction import force_trace
-        sps = st.outputs["force_trace"].options["samples_per_segment"]
-        sps = max(1, int(round(sps * self.scene.resolution)))
-        for i in step.points:
-            p = st.points[i]
-            tr = force_trace(np.array(p.values["K"]), p.values["path"], samples_per_segment=sps)
-            self.data[st.name][i]["force_trace"] = tr
-            self.progress.advance(1, st.name)
-
-    def k_forces(self, st: Study, step: Step) -> None:
-        from ..friction import EyringDetachment, SlidingModel, ViscoelasticDetachment, steady_sliding
-        for i in step.points:
-            p = st.points[i]
-            v = p.values
-            law = (ViscoelasticDetachment(v["G0"], v["V_star"], v["n"]) if v["law"] == "viscoelastic"
-                   else EyringDetachment(v["G0"], v["V_star"]))
-            model = SlidingModel(N=v["N"], K=v["K"], f_par1=v["f_par1"], f_perp1=v["f_perp1"], law=law)
-            V = _grid(st, p, "forces", self.scene.resolution)
-            r = steady_sliding(V, model, t_off=v["t_off"])
-            self.data[st.name][i]["forces"] = {"V": V, "F_par": np.atleast_1d(r.F_par),
-                                               "F_perp": np.atleast_1d(r.F_perp)}
-            self.progress.advance(1, st.name)
-
-
-def _design(p: Point) -> tuple:
-    """The design alone (model parameters, not the study's free variables): the cache key."""
-    key = p.__dict__.get("_design_key")
-    if key is None:
-        key = p.__dict__["_design_key"] = _key({k: v for k, v in p.values.items() if k in p.params})
-    return key
-
-
-def _peel_characteristics(model: str, v: Dict[str, float]) -> Dict[str, float]:
-    from ..seta import kendall_fn, rivlin_fn
-    w = v["w"]
-    if model == "rivlin":
-        return {"fn0": float(rivlin_fn(0.0, w))}
-    EA = v["EA"]
-    ft_max = math.sqrt(2 * EA * w)
-    out = {"fn0": float(kendall_fn(0.0, EA, w)), "ft_max": ft_max}
-    if not math.isfinite(ft_max):
-        out.update(max_pull_off=math.inf, ft_at_max_pull_off=math.inf)
-        return out
-    # Fn(Ft) is smooth and unimodal on [0, ft_max]: bracket on a grid, then golden section.
-    g = np.linspace(0.0, ft_max, 257)
-    fn = np.asarray(kendall_fn(g, EA, w))
-    j = int(np.argmin(fn))
-    a, b = g[max(j - 1, 0)], g[min(j + 1, g.size - 1)]
-    r = (math.sqrt(5) - 1) / 2
-    c, d = b - r * (b - a), a + r * (b - a)
-    fc, fd = float(kendall_fn(c, EA, w)), float(kendall_fn(d, EA, w))
-    for _ in range(100):
-        if b - a <= 1e-14 * max(1.0, abs(b)):
-            break
-        if fc < fd:
-            b, d, fd = d, c, fc
-            c = b - r * (b - a)
-            fc = float(kendall_fn(c, EA, w))
-        else:
-            a, c, fc = c, d, fd
-            d = a + r * (b - a)
-            fd = float(kendall_fn(d, EA, w))
-    ft = 0.5 * (a + b)
-    out.update(max_pull_off=-float(kendall_fn(ft, EA, w)), ft_at_max_pull_off=ft)
-    return out
+        ADAPTERS[st.model.name].run(self, st, step)
 
 
 # ---- curves of each plot -------------------------------------------------------------------------
@@ -435,7 +165,6 @@ def _tex_symbol(name: str) -> str:
 
 
 _TEX = {f: _tex_symbol(f) for f in SETA_FIELDS}
-_ROLE = {"two_level_seta": "seta", "single_fiber": "fiber", "kendall": "kendall", "rivlin": "rivlin"}
 
 
 def plot_curves(scene: Scene, plot, data) -> List[Curve]:
@@ -454,7 +183,7 @@ def plot_curves(scene: Scene, plot, data) -> List[Curve]:
                     c = d["critical_line"]
                     curves.append(Curve(st.name, st.label_for(p, many), np.asarray(c["Fn"]) / w_of(p),
                                         np.asarray(c["Ft"]) / w_of(p), "Fn_bar", "Ft_bar",
-                                        _ROLE.get(st.model.name, "line"),
+                                        ADAPTERS[st.model.name].role,
                                         meta={"status": np.asarray(c["status"]), "values": p.values}))
                 if "linear_line" in d:
                     c = d["linear_line"]

@@ -1,5 +1,6 @@
-// bench/elliptic/harness.hpp — the measuring half of the elliptic benchmark: run time of a kernel
-// over a whole input array, and its error against the stored mpmath references.
+// bench/harness.hpp — the one timing harness of the C++ benchmarks (elliptic, seta, friction,
+// scaling, tradeoff): clocks, medians over repetitions, the interleaved sweep timing of the
+// elliptic kernels, errors against stored references, and the result-table writers.
 //
 // Why hand-rolled rather than Google Benchmark: every method must be timed on exactly the array
 // whose errors are reported, in the same run, and the table joins both. Google Benchmark's model
@@ -14,21 +15,44 @@
 // The clock is the CPU time of this thread (CLOCK_THREAD_CPUTIME_ID), not wall time: on a machine
 // shared with other jobs, the intervals when the scheduler runs someone else are then not counted.
 // What remains (cache and memory-bandwidth interference, frequency changes) is what the median
-// over repetitions and the interleaving are for.
+// over repetitions and the interleaving are for. Wall time (steady_clock) is there for the
+// multithreaded batch calls, whose work is spread over threads.
 //
-// Also here: csv_text, the one CSV quoting of the benchmarks that write result tables
-// (bench_elliptic, bench/tradeoff/bench_tradeoff.cpp).
+// Also here: csv_text, the one CSV quoting of the benchmarks that write result tables, and
+// row/write, the family-method-setting-time-error table of the friction benchmarks.
 #pragma once
 
 #include <algorithm>
-#include <ctime>
+#include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
+#include <ctime>
 #include <limits>
 #include <string>
 #include <vector>
 
 namespace gecko_bench {
+
+// ---- clocks ----------------------------------------------------------------------------------
+
+// Seconds of CPU time of `clock` (CLOCK_THREAD_CPUTIME_ID: this thread; CLOCK_PROCESS_CPUTIME_ID:
+// all threads of the process).
+inline double cpu_seconds(clockid_t clock = CLOCK_THREAD_CPUTIME_ID) {
+  timespec ts{};
+  clock_gettime(clock, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+inline double thread_seconds() { return cpu_seconds(CLOCK_THREAD_CPUTIME_ID); }
+inline double thread_cpu_ns() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return 1e9 * static_cast<double>(ts.tv_sec) + static_cast<double>(ts.tv_nsec);
+}
+inline double wall_seconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+inline double wall_ns() { return 1e9 * wall_seconds(); }
 
 // One timed thing: a function that evaluates a kernel over the whole input array into `out`.
 // Results go to memory that is read afterwards (errors, checksum), so the compiler cannot drop
@@ -52,6 +76,27 @@ inline double quantile(std::vector<double> v, double q) {
   const auto lo = static_cast<std::size_t>(pos);
   const auto hi = std::min(lo + 1, v.size() - 1);
   return v[lo] + (pos - static_cast<double>(lo)) * (v[hi] - v[lo]);
+}
+
+// The median of repetitions (the mean of the middle two for an even count).
+inline double median(const std::vector<double>& v) { return quantile(v, 0.5); }
+
+// Calls f() `inner` times per repetition; returns the median thread CPU seconds per call.
+template <class F>
+double median_seconds(F&& f, int inner, int reps) {
+  std::vector<double> t;
+  for (int r = 0; r < reps; ++r) {
+    const double t0 = thread_seconds();
+    for (int i = 0; i < inner; ++i) f();
+    t.push_back((thread_seconds() - t0) / inner);
+  }
+  return median(t);
+}
+
+// Keeps a value alive so the optimiser cannot drop the work.
+template <class T>
+inline void keep(const T& v) {
+  asm volatile("" : : "g"(&v) : "memory");
 }
 
 // Relative error of got[i] against ref = hi[i] + lo[i] (+ delta[i] when given: the reference
@@ -97,11 +142,7 @@ struct timed_case {
 // Times every case `reps` times, interleaved; returns a checksum of all outputs (printed by the
 // caller, which is what finally keeps every evaluation observable).
 inline double time_cases(std::vector<timed_case>& cases, int reps, double target_ms) {
-  auto now_ns = [] {
-    timespec ts{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return 1e9 * static_cast<double>(ts.tv_sec) + static_cast<double>(ts.tv_nsec);
-  };
+  auto now_ns = [] { return thread_cpu_ns(); };
   auto run = [&](timed_case& c) {
     const double t0 = now_ns();
     for (std::size_t p = 0; p < c.passes; ++p) c.sweep(c.inputs, c.out.data());
@@ -142,6 +183,41 @@ inline std::string csv_text(const std::string& s) {
     out += ch;
   }
   return out + "\"";
+}
+
+// ---- the family / method / setting / time / error table (friction benchmarks) ---------------
+
+struct row {
+  std::string family, method, setting;
+  double seconds;
+  double error;  // relative, NaN when not applicable
+  std::string note;
+};
+
+inline void write(const std::vector<row>& rows, const std::string& csv, const std::string& md,
+                  const std::string& title) {
+  if (FILE* f = std::fopen(csv.c_str(), "w")) {
+    std::fprintf(f, "family,method,setting,seconds,rel_error,note\n");
+    for (const auto& r : rows)
+      std::fprintf(f, "%s,%s,%s,%.6g,%.3g,%s\n", r.family.c_str(), r.method.c_str(),
+                   r.setting.c_str(), r.seconds, r.error, r.note.c_str());
+    std::fclose(f);
+  }
+  if (FILE* f = std::fopen(md.c_str(), "w")) {
+    std::fprintf(f, "%s\n\n| family | method | setting | time | max rel. error | note |\n"
+                    "|---|---|---|---|---|---|\n", title.c_str());
+    for (const auto& r : rows) {
+      char t[64];
+      if (r.seconds < 1e-3) std::snprintf(t, sizeof t, "%.3g us", r.seconds * 1e6);
+      else std::snprintf(t, sizeof t, "%.3g ms", r.seconds * 1e3);
+      char e[64];
+      if (r.error == r.error) std::snprintf(e, sizeof e, "%.2g", r.error);
+      else std::snprintf(e, sizeof e, "-");
+      std::fprintf(f, "| %s | %s | %s | %s | %s | %s |\n", r.family.c_str(), r.method.c_str(),
+                   r.setting.c_str(), t, e, r.note.c_str());
+    }
+    std::fclose(f);
+  }
 }
 
 }  // namespace gecko_bench
