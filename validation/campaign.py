@@ -162,7 +162,9 @@ def classify(P, FT, Fn, beta, status, v):
     tenth of the threshold), disagrees by more than WRONG_REL; NaN or a number where the status
     says otherwise."""
     scale = np.maximum(1.0, np.abs(Fn))
-    ok = status == 0
+    # 7 (inadmissible: the seta crosses the substrate) is a solved state with its values kept, so
+    # it is verified like 0
+    ok = (status == 0) | (status == 7)
     rel = np.abs(v["dFn"]) / scale
     conclusive_fn = v["fn_uncert"] / scale < 0.1 * WRONG_REL
     conclusive_beta = v["beta_uncert"] < 0.1 * WRONG_REL
@@ -172,8 +174,7 @@ def classify(P, FT, Fn, beta, status, v):
     wrong_fn = ok & conclusive_fn & ~(rel <= WRONG_REL)
     wrong_beta = ok & conclusive_fn & conclusive_beta & ~(np.abs(v["dbeta"]) <= WRONG_REL)
     nonfinite_ok = ok & ~(np.isfinite(Fn) & np.isfinite(beta))
-    # status 7 (inadmissible: solves the equations, the seta crosses the substrate) keeps its values
-    number_with_status = (status != 0) & (status != INADMISSIBLE) & (np.isfinite(Fn) | np.isfinite(beta))
+    number_with_status = ~ok & (np.isfinite(Fn) | np.isfinite(beta))
     return dict(rel=rel, wrong_fn=wrong_fn, wrong_beta=wrong_beta, nonfinite_ok=nonfinite_ok,
                 number_with_status=number_with_status, inconclusive_fn=ok & ~conclusive_fn,
                 inconclusive_beta=ok & ~conclusive_beta)

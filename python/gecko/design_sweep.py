@@ -14,7 +14,16 @@ Only what the outputs need is solved (docs/theory/two_level_seta.md, gecko/seta/
 * ``fn0``, ``slope_k``, ``sticky_at_rest`` need the natural state at Ft = 0 (one homotopy solve
   and one linear solve for the slope), no line is traced;
 * ``max_pull_off``, ``ft_at_max_pull_off``, ``min_fn``, ``ft_at_line_end``, ``fn_at_line_end``,
-  ``line_end``, ``folds`` follow the critical line to its end.
+  ``line_end``, ``folds``, ``admissible_end_ft``, ``admissible_to_end`` follow the critical line to
+  its end. The minimum (``max_pull_off`` and its Ft) is taken over the admissible part of the line
+  only: from Ft = 0 to ``admissible_end_ft``, the first state where the deformed seta crosses the
+  substrate (``admissible_to_end``: the whole followed line is admissible). Where the minimum sits
+  at the end of the followed range and that end is not (Ft)max (EA2 = inf; a line given up),
+  ``max_pull_off`` is NaN, as in ``TwoLevelSeta.characteristics()``, and ``max_pull_off_bound``
+  (with ``max_pull_off_is_bound``) gives the bound over the followed range;
+* ``slope_at_zero`` is the tangent dFn/dFt at Ft = 0 (``slope_k`` its deprecated alias); ``paper_k``
+  is the paper's k (eq (16): the least-squares slope through (0, (Fn)0) over the lower part of the
+  line, see ``SetaCharacteristics.paper_k``).
 
 Designs are computed in chunks by the compiled batch call ``_core.seta_characteristics_batch``
 (C++ threads, the GIL released), or as Dask tasks on a ``dask.distributed`` cluster
@@ -85,14 +94,15 @@ __all__ = ["sweep", "SWEEP_OUTPUTS", "DEFAULT_SWEEP_OUTPUTS", "design_grid", "ra
 #: output -> solver depth it needs (0: closed forms, 1: natural state at Ft = 0, 2: the line)
 SWEEP_OUTPUTS: Dict[str, int] = {
     "ft_max": 0, "small_fn0": 0, "small_slope_k": 0, "small_contact_length": 0, "small_non_sticky": 0,
-    "fn0": 1, "slope_k": 1, "sticky_at_rest": 1,
+    "fn0": 1, "slope_k": 1, "slope_at_zero": 1, "sticky_at_rest": 1,
     "max_pull_off": 2, "ft_at_max_pull_off": 2, "min_fn": 2, "ft_at_line_end": 2, "fn_at_line_end": 2,
-    "line_end": 2, "folds": 2,
+    "line_end": 2, "folds": 2, "admissible_end_ft": 2, "admissible_to_end": 2, "paper_k": 2,
+    "max_pull_off_bound": 2, "max_pull_off_is_bound": 2,
 }
 DEFAULT_SWEEP_OUTPUTS = ("fn0", "slope_k", "max_pull_off", "ft_at_max_pull_off", "ft_max", "sticky_at_rest")
 # column name in the table -> key in the compiled call's result
 _SOURCE = {"ft_at_max_pull_off": "ft_at_min_fn"}
-_BOOL = ("sticky_at_rest", "small_non_sticky")
+_BOOL = ("sticky_at_rest", "small_non_sticky", "admissible_to_end", "max_pull_off_is_bound")
 
 #: ``line_end`` codes -> why the followed line stopped (gecko/seta/detail/continuation.hpp; the
 #: same table as ``TwoLevelSeta.characteristics().end``)

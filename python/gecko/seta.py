@@ -14,7 +14,14 @@ line followed from Ft = 0 (beyond a fold, |Ft| > (Ft)max); 3 state outside the m
 (also: the line left them before reaching this Ft); 4 singular (Ft exactly at a fold); 5 bad input
 under ``errors="nan"``; 6 not reached: the continuation gave up before this Ft (point budget, step
 collapse, corrector failure; ``critical_line().end`` says which), so whether a critical state
-exists there is unknown, unlike 2.
+exists there is unknown, unlike 2; 7 inadmissible: the state solves the equations (paper 001 eq
+(15)) but the deformed seta crosses the substrate before the contact edge (``min_z < 0``: the
+joint or the beam below it), or its largest axial strain exceeds ``strain_limit``. Status-7 states
+keep their ``Fn``, ``theta_joint`` and the rest (for drawing); they are no state of a real seta.
+
+Every solved state reports ``min_z`` (its lowest height above the substrate over the seta, 0 when
+the contact edge is the lowest point), ``min_z_at`` (the arc length s of that point) and
+``max_axial_strain`` (the largest |T|/EA along the seta).
 
 Bad input raises ``ValueError`` naming the parameter and its allowed range (or, with
 ``errors="nan"``, marks the element with status 5).
@@ -76,7 +83,28 @@ _MIN_STATUS = {
     2: "range_end",         # at the end of the followed range ((Ft)max or ft_end)
     3: "line_incomplete",   # the line stopped early (see end): minimum over the followed part
     4: "not_certified",     # a minimum could not be refined or verified: min_fn etc. are NaN
+    5: "admissible_end",    # at the end of the admissible part of the line (admissible_end_ft)
+    6: "no_admissible_state",  # the natural state itself is inadmissible: NaN values
 }
+
+
+def _strain_limit(strain_limit) -> float:
+    if strain_limit is None:
+        return math.inf
+    v = float(strain_limit)
+    if not v > 0:
+        raise ValueError(f"strain_limit = {strain_limit!r}: must be > 0 (None: no limit)")
+    return v
+
+
+def _ft_end(ft_end) -> float:
+    """None: the default end; a number must be finite (NaN is not silently the default)."""
+    if ft_end is None:
+        return math.nan
+    v = float(ft_end)
+    if not math.isfinite(v):
+        raise ValueError(f"ft_end = {ft_end!r}: must be a finite shear force (None: the default end)")
+    return v
 
 def _flat(x, name="Ft"):
     a = _real_array(x, name)
@@ -115,6 +143,10 @@ class CriticalLine:
         Traced line only: the branch index of each node.
     end_code : LineEnd or None
         Traced line only: ``end`` as a :class:`LineEnd` member (compare these in code).
+    min_z, min_z_at, max_axial_strain : numpy.ndarray or None
+        Admissibility of each solved state (status 0 or 7; NaN otherwise): the lowest height of the
+        seta above the substrate (0: the contact edge; < 0: it crosses the substrate, status 7), the
+        arc length s where it is, and the largest axial strain abs(T)/EA along the seta.
 
     Examples
     --------
@@ -138,6 +170,9 @@ class CriticalLine:
     end: Optional[str] = None
     branch: Optional[np.ndarray] = None
     end_code: Optional[LineEnd] = None   # ``end`` as a LineEnd member (code compares these)
+    min_z: Optional[np.ndarray] = None
+    min_z_at: Optional[np.ndarray] = None
+    max_axial_strain: Optional[np.ndarray] = None
 
     def __len__(self) -> int:
         return int(np.size(self.Ft))
@@ -155,17 +190,19 @@ class SetaCharacteristics:
     fn0 : float
         (Fn)0, the critical Fn at Ft = 0 (> 0: not sticky at rest).
     slope_k : float
-        dFn/dFt at Ft = 0, the exact tangent of the line (negative; the paper plots 1/abs(k)).
+        Deprecated alias of ``slope_at_zero`` (it is not the paper's k; see ``paper_k``).
     min_fn, ft_at_min_fn : float
         The minimum of Fn along the line followed from Ft = 0, and where it occurs.
     min_fn_interior : bool
         Whether the minimum is an interior stationary point.
     min_status : str
-        "stationary", "range_start", "range_end", "line_incomplete" or "not_certified" (NaN values).
+        "stationary", "range_start", "range_end", "line_incomplete", "not_certified" (NaN values),
+        "admissible_end" (at the end of the admissible part) or "no_admissible_state" (NaN values).
     slope_at_min_fn : float
         dFn/dFt at the minimum (about 0 for "stationary").
     max_pull_off : float
-        max(0, -min_fn).
+        max(0, -min_fn) over the admissible part of the line; NaN where the minimum sits at the end
+        of the followed range and that end is not (Ft)max (see ``max_pull_off_is_bound``).
     ft_max : float
         (Ft)max = sqrt(2 EA2 w).
     ft_at_line_end, fn_at_line_end : float
@@ -184,6 +221,22 @@ class SetaCharacteristics:
         ``end`` as a :class:`LineEnd` member.
     min_status_code : MinimumStatus or None
         ``min_status`` as a :class:`MinimumStatus` member.
+    admissible_to_end : bool
+        The whole followed line is admissible (the seta never crosses the substrate on it).
+    admissible_end_ft, admissible_end_fn : float
+        Where the admissible part of the line ends: the first state, from Ft = 0, where the seta
+        crosses the substrate (or exceeds the strain limit). The max pull-off is taken before it.
+    slope_at_zero : float
+        dFn/dFt at Ft = 0, the exact tangent of the line at the natural state.
+    paper_k : float
+        The paper's k (paper 001 eq (16), Fn = (Fn)0 + k Ft, "the slope of the straight line" of the
+        lower, bending-dominated part): the least-squares slope of a straight line through
+        (0, (Fn)0) fitted to the critical line over 0 <= Ft <= ft_at_min_fn (the lower part ends at
+        the max pull-off, where the axial-dominated part begins). NaN without a lower part.
+    max_pull_off_is_bound, max_pull_off_bound : bool, float
+        True where the minimum sits at the end of the followed range and that end is not the line's
+        own ((Ft)max): EA2 = inf (no (Ft)max), or a line given up early; ``max_pull_off`` is then
+        NaN and ``max_pull_off_bound`` the max pull-off over the followed range (a lower bound).
 
     Examples
     --------
@@ -213,6 +266,13 @@ class SetaCharacteristics:
     small_non_sticky: bool
     end_code: Optional[LineEnd] = None              # ``end`` as a LineEnd member
     min_status_code: Optional[MinimumStatus] = None  # ``min_status`` as a MinimumStatus member
+    admissible_to_end: bool = False
+    admissible_end_ft: float = math.nan
+    admissible_end_fn: float = math.nan
+    slope_at_zero: float = math.nan
+    paper_k: float = math.nan
+    max_pull_off_is_bound: bool = False
+    max_pull_off_bound: float = math.nan
 
 
 class ContactStatus(enum.IntEnum):
@@ -369,7 +429,8 @@ class TwoLevelSeta:
         return math.sqrt(2 * self.EA2 * self.w)
 
     def critical_line(self, Ft=None, *, errors: str = "raise", tolerance: Optional[float] = None,
-                      ft_end: Optional[float] = None, resolve_nodes: bool = True) -> CriticalLine:
+                      ft_end: Optional[float] = None, resolve_nodes: bool = True,
+                      strain_limit: Optional[float] = None) -> CriticalLine:
         """The critical line of adhesion.
 
         Parameters
@@ -387,6 +448,10 @@ class TwoLevelSeta:
         resolve_nodes : bool, optional
             Traced line only: re-solve every node to the state tolerance (default True); False returns
             the continuation's raw nodes (status 1, for drawing).
+        strain_limit : float, optional
+            States whose largest axial strain abs(T)/EA exceeds it get status 7 (default: no limit;
+            the reference design reaches 20 % at (Ft)max). Every solved state is also checked for
+            crossing the substrate (status 7, ``min_z < 0``).
 
         Returns
         -------
@@ -411,8 +476,9 @@ class TwoLevelSeta:
         array([5], dtype=int32)
         """
         params = self._params()
+        limit = _strain_limit(strain_limit)
         if Ft is None:
-            d = _core.seta_critical_line(params, math.nan if ft_end is None else float(ft_end), bool(resolve_nodes))
+            d = _core.seta_critical_line(params, _ft_end(ft_end), bool(resolve_nodes), limit)
             n = len(d["Ft"])
             return CriticalLine(Ft=d["Ft"], Fn=d["Fn"], theta_joint=d["theta_joint"],
                                 status=d["status"], iterations=np.zeros(n, dtype=np.int32),
@@ -420,12 +486,13 @@ class TwoLevelSeta:
                                 turning_points_beam=d["turning_points_beam"],
                                 turning_points_spatula=d["turning_points_spatula"],
                                 folds=list(d["folds"]), end=_LINE_END.get(d["end"], str(d["end"])),
-                                branch=d["branch"], end_code=LineEnd(d["end"]))
+                                branch=d["branch"], end_code=LineEnd(d["end"]), min_z=d["min_z"],
+                                min_z_at=d["min_z_at"], max_axial_strain=d["max_axial_strain"])
         if not resolve_nodes:
             raise ValueError("resolve_nodes=False applies to the traced line only (critical_line() without Ft); "
                              "states at requested Ft are always solved to the tolerance")
         shape, flat = _flat(Ft)
-        d = _core.seta_critical_line_at(params, flat, _error_code(errors), _check_tolerance(tolerance))
+        d = _core.seta_critical_line_at(params, flat, _error_code(errors), _check_tolerance(tolerance), limit)
 
         def shaped(a):
             return a.reshape(shape)
@@ -435,7 +502,9 @@ class TwoLevelSeta:
                             theta_rate_joint=shaped(d["theta_rate_joint"]),
                             theta_rate_base=shaped(d["theta_rate_base"]),
                             turning_points_beam=shaped(d["turning_points_beam"]),
-                            turning_points_spatula=shaped(d["turning_points_spatula"]))
+                            turning_points_spatula=shaped(d["turning_points_spatula"]),
+                            min_z=shaped(d["min_z"]), min_z_at=shaped(d["min_z_at"]),
+                            max_axial_strain=shaped(d["max_axial_strain"]))
 
     def contact_state(self, Fn, Ft, *, all_equilibria: bool = False, errors: str = "raise",
                       scan_points: Optional[int] = None, threads: int = 0,
@@ -534,7 +603,8 @@ class TwoLevelSeta:
                             equilibria=counts.astype(np.int32).reshape(shape), state_status=st.reshape(shape + (k,)),
                             **fields)
 
-    def solve(self, Ft: float, guess=None, *, tolerance: Optional[float] = None, max_iterations: int = 40) -> dict:
+    def solve(self, Ft: float, guess=None, *, tolerance: Optional[float] = None, max_iterations: int = 40,
+              strain_limit: Optional[float] = None) -> dict:
         """One critical state at ``Ft``.
 
         Parameters
@@ -548,12 +618,15 @@ class TwoLevelSeta:
             Newton's tolerance on the scaled step (default 1e-12).
         max_iterations : int, optional
             Newton's iteration budget with a guess (default 40).
+        strain_limit : float, optional
+            A state above this axial strain gets status 7 (default: no limit).
 
         Returns
         -------
         dict
             ``Ft, Fn, theta_joint, status, iterations, theta_rate_joint, theta_rate_base,
-            turning_points_beam, turning_points_spatula``.
+            turning_points_beam, turning_points_spatula, min_z, min_z_at, max_axial_strain``
+            (status 7, values kept: the seta crosses the substrate or exceeds ``strain_limit``).
 
         Raises
         ------
@@ -569,22 +642,29 @@ class TwoLevelSeta:
         """
         tol = _check_tolerance(tolerance)
         max_iterations = _check_count(max_iterations, "max_iterations")
+        limit = _strain_limit(strain_limit)
         if guess is None:
-            return _core.seta_solve(self._params(), float(Ft), tolerance=tol, max_iterations=max_iterations)
+            return _core.seta_solve(self._params(), float(Ft), tolerance=tol, max_iterations=max_iterations,
+                                    strain_limit=limit)
         g = [float(x) for x in guess] + [math.nan] * (4 - len(guess))
-        return _core.seta_solve(self._params(), float(Ft), g[0], g[1], g[2], g[3], tol, max_iterations)
+        return _core.seta_solve(self._params(), float(Ft), g[0], g[1], g[2], g[3], tol, max_iterations, limit)
 
-    def characteristics(self, ft_end: Optional[float] = None) -> SetaCharacteristics:
+    def characteristics(self, ft_end: Optional[float] = None, *,
+                        strain_limit: Optional[float] = None) -> SetaCharacteristics:
         """(Fn)0, slope k, maximum pull-off and its Ft, (Ft)max, stickiness at rest.
 
         The small-deformation values (paper 001 eqs 7, 18-22) come alongside. ``min_status`` says where
         the minimum of Fn lies and whether it was verified ("stationary": dFn/dFt = 0 at
-        ``ft_at_min_fn``; "not_certified": NaN values, never a traced node's Fn).
+        ``ft_at_min_fn``; "not_certified": NaN values, never a traced node's Fn). The minimum is
+        taken over the admissible part of the line only (up to ``admissible_end_ft``, where the seta
+        first crosses the substrate or exceeds ``strain_limit``).
 
         Parameters
         ----------
         ft_end : float, optional
             Follow the line only up to this Ft (default (Ft)max); 0 solves the natural state only.
+        strain_limit : float, optional
+            States above this axial strain are inadmissible (default: no limit).
 
         Returns
         -------
@@ -602,7 +682,7 @@ class TwoLevelSeta:
         >>> round(c.fn0, 4), round(c.slope_k, 4), round(c.ft_at_min_fn, 4), c.sticky_at_rest
         (0.2499, -0.7414, 7.1232, False)
         """
-        d = _core.seta_characteristics(self._params(), math.nan if ft_end is None else float(ft_end))
+        d = _core.seta_characteristics(self._params(), _ft_end(ft_end), _strain_limit(strain_limit))
         d = dict(d)
         d["end_code"], d["min_status_code"] = LineEnd(d["end"]), MinimumStatus(d["min_status"])
         d["end"] = _LINE_END.get(d["end"], str(d["end"]))
@@ -635,7 +715,10 @@ class TwoLevelSeta:
         >>> d["dFn"].shape, d["parameters"][7]
         ((2, 9), 'alpha2')
         """
-        ft = np.ascontiguousarray(np.atleast_1d(_real_array(Ft, "Ft")).reshape(-1))
+        ft = np.atleast_1d(_real_array(Ft, "Ft"))
+        if ft.ndim != 1:
+            raise ValueError(f"Ft must be a number or a 1-D array (got shape {ft.shape})")
+        ft = np.ascontiguousarray(ft)
         d = dict(_core.seta_sensitivities(self._params(), ft))
         d["parameters"] = list(self._FIELDS)
         return d
@@ -643,28 +726,32 @@ class TwoLevelSeta:
     def shape(self, Ft: float, steps: int = 200) -> dict:
         """The deformed shape of the critical state at ``Ft``, computed only when asked for.
 
-        RK4 integration of the governing equations (paper 001 eqs 1-5) from the solved base state,
-        ``steps`` per segment, error O(h^4).
+        Adaptive RK4 integration (step doubling) of the governing equations (paper 001 eqs (1)-(2))
+        from the solved base state, accurate to 1e-12 at any sampling.
 
         Parameters
         ----------
         Ft : float
             The shear force.
         steps : int, optional
-            Integration steps per segment (default 200).
+            Output points per segment (default 200), >= 1.
 
         Returns
         -------
         dict
-            Arrays ``s, x, z, theta`` from the base (s = 0) to the contact edge (z = 0), with
-            ``closing_error`` = theta(a) - pi/2 of the integration, ``Fn`` and ``status``.
+            Arrays ``s, x, z, theta`` from the base (s = 0) to the contact edge (z = 0);
+            ``closing_error`` = theta(a) - pi/2; ``max_closing_error``, the largest mismatch against
+            the solved state (joint angle and rate, edge angle, Griffith edge rate);
+            ``error_estimate``, the summed local error estimates; ``shape_status`` 0 when both are
+            within 1e-10 (1 not, 2 step collapse, 3 no state); the state's ``Fn``, ``status`` (7:
+            drawn, but the seta crosses the substrate), ``min_z`` and ``max_axial_strain``.
 
         Examples
         --------
         >>> import gecko
         >>> sh = gecko.TwoLevelSeta().shape(2.0)
-        >>> float(sh["z"][-1]), abs(sh["closing_error"]) < 1e-6
-        (0.0, True)
+        >>> float(sh["z"][-1]), sh["shape_status"], sh["max_closing_error"] < 1e-10
+        (0.0, 0, True)
         """
         return dict(_core.seta_shape(self._params(), float(Ft), int(steps)))
 
@@ -709,7 +796,11 @@ class TwoLevelSeta:
         -1.0686
         """
         d = self.small_deformation()
-        out = d["fn0"] + d["slope_k"] * _real_array(Ft, "Ft")
+        ft = _real_array(Ft, "Ft")
+        if not np.all(np.isfinite(ft)):
+            i = int(np.flatnonzero(~np.isfinite(ft.reshape(-1)))[0])
+            raise ValueError(f"Ft[{i}] = {ft.reshape(-1)[i]!r}: must be finite")
+        out = d["fn0"] + d["slope_k"] * ft
         return float(out) if np.ndim(out) == 0 else out
 
 
@@ -800,7 +891,7 @@ class SingleFiber:
 
 
 def critical_line_batch(designs, Ft, *, threads: int = 1, errors: str = "raise",
-                        tolerance: Optional[float] = None) -> CriticalLine:
+                        tolerance: Optional[float] = None, strain_limit: Optional[float] = None) -> CriticalLine:
     """Many designs x many Ft in one call, on several threads (the GIL released).
 
     Parameters
@@ -815,6 +906,9 @@ def critical_line_batch(designs, Ft, *, threads: int = 1, errors: str = "raise",
         Bad input raises ``ValueError`` (default) or gives status 5 in its entries.
     tolerance : float, optional
         Newton's tolerance (default 1e-12).
+    strain_limit : float, optional
+        States above this axial strain get status 7 (default: no limit; status 7 also where the
+        seta crosses the substrate).
 
     Returns
     -------
@@ -846,9 +940,13 @@ def critical_line_batch(designs, Ft, *, threads: int = 1, errors: str = "raise",
             raise ValueError(f"designs: need a table of width 9 (EI1, EI2, EA1, EA2, l1, l2, alpha1, alpha2, w), "
                              f"one row per design; got shape {arr.shape} (width "
                              f"{arr.shape[-1] if arr.ndim else 0})")
-    ft = np.ascontiguousarray(_real_array(Ft, "Ft").reshape(-1))
+    ft = _real_array(Ft, "Ft")
+    if ft.ndim > 1:  # never flatten a table of Ft silently
+        raise ValueError(f"Ft must be a number or a 1-D array (got shape {ft.shape})")
+    ft = np.ascontiguousarray(ft.reshape(-1))
     d = _core.seta_batch(np.ascontiguousarray(arr.reshape(-1)), ft, _error_code(errors),
-                         _check_count(threads, "threads", 4096), _check_tolerance(tolerance))
+                         _check_count(threads, "threads", 4096), _check_tolerance(tolerance),
+                         _strain_limit(strain_limit))
     shape = (arr.shape[0], ft.size)
 
     def shaped(a):
@@ -859,7 +957,9 @@ def critical_line_batch(designs, Ft, *, threads: int = 1, errors: str = "raise",
                         iterations=shaped(d["iterations"]), theta_rate_joint=shaped(d["theta_rate_joint"]),
                         theta_rate_base=shaped(d["theta_rate_base"]),
                         turning_points_beam=shaped(d["turning_points_beam"]),
-                        turning_points_spatula=shaped(d["turning_points_spatula"]))
+                        turning_points_spatula=shaped(d["turning_points_spatula"]),
+                        min_z=shaped(d["min_z"]), min_z_at=shaped(d["min_z_at"]),
+                        max_axial_strain=shaped(d["max_axial_strain"]))
 
 
 def kendall_fn(Ft, EA, w, *, errors: str = "raise"):

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -35,23 +36,31 @@ TwoLevelSeta<double> design_from(const darray& params) {
   return design_from(params.data());
 }
 
-critical_line_options<double> line_options(double ft_end, double tolerance) {
+critical_line_options<double> line_options(double ft_end, double tolerance,
+                                           double strain_limit = std::numeric_limits<double>::infinity()) {
   critical_line_options<double> o;
   o.ft_end = ft_end;
   if (tolerance == tolerance) o.tolerance = tolerance;
+  if (!(strain_limit > 0))  // NaN or <= 0
+    throw std::invalid_argument("gecko: strain_limit must be > 0 (None or inf: no limit)");
+  o.strain_limit = strain_limit;
   return o;
 }
 
 // Columns of critical states.
 struct state_columns {
-  py::array_t<double> Fn, theta_joint, rate_joint, rate_base;
+  py::array_t<double> Fn, theta_joint, rate_joint, rate_base, min_z, min_z_at, max_strain;
   py::array_t<std::int32_t> status, iterations, tp_beam, tp_spatula;
   explicit state_columns(py::ssize_t n)
-      : Fn(n), theta_joint(n), rate_joint(n), rate_base(n), status(n), iterations(n), tp_beam(n), tp_spatula(n) {}
+      : Fn(n), theta_joint(n), rate_joint(n), rate_base(n), min_z(n), min_z_at(n), max_strain(n), status(n),
+        iterations(n), tp_beam(n), tp_spatula(n) {}
   struct raw {
-    double *Fn, *theta_joint, *rate_joint, *rate_base;
+    double *Fn, *theta_joint, *rate_joint, *rate_base, *min_z, *min_z_at, *max_strain;
     std::int32_t *status, *iterations, *tp_beam, *tp_spatula;
     void put(std::size_t i, const critical_state<double>& s) const {
+      min_z[i] = s.min_z;
+      min_z_at[i] = s.min_z_at;
+      max_strain[i] = s.max_axial_strain;
       Fn[i] = s.Fn;
       theta_joint[i] = s.theta_joint;
       rate_joint[i] = s.theta_rate_joint;
@@ -64,7 +73,7 @@ struct state_columns {
   };
   raw pointers() {
     return {Fn.mutable_data(), theta_joint.mutable_data(), rate_joint.mutable_data(), rate_base.mutable_data(),
-            status.mutable_data(), iterations.mutable_data(), tp_beam.mutable_data(), tp_spatula.mutable_data()};
+            min_z.mutable_data(), min_z_at.mutable_data(), max_strain.mutable_data(), status.mutable_data(), iterations.mutable_data(), tp_beam.mutable_data(), tp_spatula.mutable_data()};
   }
   py::dict as_dict() const {
     py::dict d;
@@ -76,6 +85,9 @@ struct state_columns {
     d["iterations"] = iterations;
     d["turning_points_beam"] = tp_beam;
     d["turning_points_spatula"] = tp_spatula;
+    d["min_z"] = min_z;
+    d["min_z_at"] = min_z_at;
+    d["max_axial_strain"] = max_strain;
     return d;
   }
 };
@@ -100,32 +112,35 @@ void bind_seta(py::module_& m) {
     return ft_max(s);
   }, py::arg("params"), py::arg("Ft") = std::nan(""));
 
-  m.def("seta_critical_line_at", [](const darray& params, const darray& Ft, int errors, double tolerance) {
+  m.def("seta_critical_line_at", [](const darray& params, const darray& Ft, int errors, double tolerance,
+                                    double strain_limit) {
     const auto s = design_from(params);
     const auto n = static_cast<std::size_t>(Ft.size());
     state_columns cols(static_cast<py::ssize_t>(n));
     auto raw = cols.pointers();
     const double* f = Ft.data();
+    const auto o = line_options(std::nan(""), tolerance, strain_limit);
     {
       py::gil_scoped_release release;
       std::vector<critical_state<double>> out;
-      line_at(s, f, n, errors, line_options(std::nan(""), tolerance), out);
+      line_at(s, f, n, errors, o, out);
       for (std::size_t i = 0; i < n; ++i) raw.put(i, out[i]);
     }
     return cols.as_dict();
-  }, py::arg("params"), py::arg("Ft"), py::arg("errors") = 0, py::arg("tolerance") = std::nan(""));
+  }, py::arg("params"), py::arg("Ft"), py::arg("errors") = 0, py::arg("tolerance") = std::nan(""),
+     py::arg("strain_limit") = std::numeric_limits<double>::infinity());
 
-  m.def("seta_critical_line", [](const darray& params, double ft_end, bool resolve_nodes) {
+  m.def("seta_critical_line", [](const darray& params, double ft_end, bool resolve_nodes, double strain_limit) {
     const auto s = design_from(params);
     critical_line_result<double> r;
+    auto options = line_options(ft_end, std::nan(""), strain_limit);
+    options.resolve_nodes = resolve_nodes;
     {
       py::gil_scoped_release release;
-      auto options = line_options(ft_end, std::nan(""));
-      options.resolve_nodes = resolve_nodes;
       r = critical_line(s, options);
     }
     const auto n = static_cast<py::ssize_t>(r.points.size());
-    py::array_t<double> Ft(n), Fn(n), beta(n), rj(n), rb(n);
+    py::array_t<double> Ft(n), Fn(n), beta(n), rj(n), rb(n), mz(n), mza(n), mst(n);
     py::array_t<std::int32_t> tpb(n), tps(n), branch(n), status(n);
     for (py::ssize_t i = 0; i < n; ++i) {
       const auto& p = r.points[static_cast<std::size_t>(i)];
@@ -138,6 +153,9 @@ void bind_seta(py::module_& m) {
       tpb.mutable_data()[i] = p.turning_points_beam;
       tps.mutable_data()[i] = p.turning_points_spatula;
       branch.mutable_data()[i] = p.branch;
+      mz.mutable_data()[i] = p.min_z;
+      mza.mutable_data()[i] = p.min_z_at;
+      mst.mutable_data()[i] = p.max_axial_strain;
     }
     py::dict d;
     d["Ft"] = Ft;
@@ -149,25 +167,33 @@ void bind_seta(py::module_& m) {
     d["turning_points_spatula"] = tps;
     d["branch"] = branch;
     d["status"] = status;
+    d["min_z"] = mz;
+    d["min_z_at"] = mza;
+    d["max_axial_strain"] = mst;
     d["folds"] = py::cast(r.folds);
     d["end"] = static_cast<int>(r.end);
     d["natural_Fn"] = r.natural.Fn;
     d["natural_status"] = static_cast<int>(r.natural.status);
     return d;
   }, py::arg("params"), py::arg("ft_end") = std::nan(""),
-     py::arg("resolve_nodes") = true);
+     py::arg("resolve_nodes") = true, py::arg("strain_limit") = std::numeric_limits<double>::infinity());
 
   m.def("seta_solve", [](const darray& params, double Ft, double Fn, double beta, double rate_joint,
-                         double rate_base, double tolerance, int max_iterations) {
+                         double rate_base, double tolerance, int max_iterations, double strain_limit) {
     const auto s = design_from(params);
     critical_state<double> r;
+    const auto lo = line_options(std::nan(""), tolerance, strain_limit);
     {
       py::gil_scoped_release release;
       solve_options<double> o;
       if (tolerance == tolerance) o.tolerance = tolerance;
       o.max_iterations = max_iterations;
-      r = Fn == Fn ? solve_critical(s, Ft, critical_guess<double>{Fn, beta, rate_joint, rate_base}, o)
-                   : solve_critical(s, Ft);
+      o.strain_limit = strain_limit;
+      if (Fn == Fn) {
+        r = solve_critical(s, Ft, critical_guess<double>{Fn, beta, rate_joint, rate_base}, o);
+      } else {
+        critical_line_at(s, &Ft, 1, &r, lo);
+      }
     }
     py::dict d;
     d["Ft"] = r.Ft;
@@ -179,17 +205,22 @@ void bind_seta(py::module_& m) {
     d["theta_rate_base"] = r.theta_rate_base;
     d["turning_points_beam"] = r.turning_points_beam;
     d["turning_points_spatula"] = r.turning_points_spatula;
+    d["min_z"] = r.min_z;
+    d["min_z_at"] = r.min_z_at;
+    d["max_axial_strain"] = r.max_axial_strain;
     return d;
   }, py::arg("params"), py::arg("Ft"), py::arg("Fn") = std::nan(""), py::arg("theta_joint") = std::nan(""),
      py::arg("theta_rate_joint") = std::nan(""), py::arg("theta_rate_base") = std::nan(""),
-     py::arg("tolerance") = std::nan(""), py::arg("max_iterations") = 40);
+     py::arg("tolerance") = std::nan(""), py::arg("max_iterations") = 40,
+     py::arg("strain_limit") = std::numeric_limits<double>::infinity());
 
-  m.def("seta_characteristics", [](const darray& params, double ft_end) {
+  m.def("seta_characteristics", [](const darray& params, double ft_end, double strain_limit) {
     const auto s = design_from(params);
     seta_characteristics<double> c;
+    const auto o = line_options(ft_end, std::nan(""), strain_limit);
     {
       py::gil_scoped_release release;
-      c = characteristics(s, line_options(ft_end, std::nan("")));
+      c = characteristics(s, o);
     }
     py::dict d;
     d["fn0"] = c.fn0;
@@ -210,13 +241,22 @@ void bind_seta(py::module_& m) {
     d["small_slope_k"] = c.small.slope_k;
     d["small_contact_length"] = c.small.contact_length;
     d["small_non_sticky"] = c.small.non_sticky;
+    d["admissible_to_end"] = c.admissible_to_end;
+    d["admissible_end_ft"] = c.admissible_end_ft;
+    d["admissible_end_fn"] = c.admissible_end_fn;
+    d["slope_at_zero"] = c.slope_at_zero;
+    d["paper_k"] = c.paper_k;
+    d["max_pull_off_is_bound"] = c.max_pull_off_is_bound;
+    d["max_pull_off_bound"] = c.max_pull_off_bound;
     return d;
-  }, py::arg("params"), py::arg("ft_end") = std::nan(""));
+  }, py::arg("params"), py::arg("ft_end") = std::nan(""),
+     py::arg("strain_limit") = std::numeric_limits<double>::infinity());
 
   // Many designs x many Ft: designs is (n*9) flat, Ft (m); returns (n*m) columns, row-major by
   // design. Designs are spread over `threads` std::threads; each design's line is independent,
   // so the result does not depend on the thread count.
-  m.def("seta_batch", [](const darray& designs, const darray& Ft, int errors, int threads, double tolerance) {
+  m.def("seta_batch", [](const darray& designs, const darray& Ft, int errors, int threads, double tolerance,
+                         double strain_limit) {
     if (designs.ndim() != 1 || designs.size() % 9 != 0)
       throw std::invalid_argument("gecko._core: designs must be a flat array of 9 numbers per design");
     const auto nd = static_cast<std::size_t>(designs.size() / 9);
@@ -230,7 +270,7 @@ void bind_seta(py::module_& m) {
       std::vector<TwoLevelSeta<double>> ds(nd);
       for (std::size_t i = 0; i < nd; ++i) ds[i] = design_from(p + 9 * i);
       std::vector<critical_state<double>> out(nd * m_ft);
-      const auto o = line_options(std::nan(""), tolerance);
+      const auto o = line_options(std::nan(""), tolerance, strain_limit);
       const unsigned nt = threads > 0 ? static_cast<unsigned>(threads) : 1u;
       if (errors == static_cast<int>(on_error::nan)) critical_line_batch(ds.data(), nd, f, m_ft, out.data(), nt, o, nan_policy());
       else critical_line_batch(ds.data(), nd, f, m_ft, out.data(), nt, o, default_policy());
@@ -238,7 +278,7 @@ void bind_seta(py::module_& m) {
     }
     return cols.as_dict();
   }, py::arg("designs"), py::arg("Ft"), py::arg("errors") = 0, py::arg("threads") = 1,
-     py::arg("tolerance") = std::nan(""));
+     py::arg("tolerance") = std::nan(""), py::arg("strain_limit") = std::numeric_limits<double>::infinity());
 
   // Characteristics of many designs (the design sweep, python/gecko/design_sweep.py): designs is
   // (n*9) flat; depth 0 / 1 / 2 is characteristics_depth closed_forms / natural_state / whole_line
@@ -253,8 +293,16 @@ void bind_seta(py::module_& m) {
     const auto nd = static_cast<std::size_t>(designs.size() / 9);
     const auto n = static_cast<py::ssize_t>(nd);
     py::array_t<double> fn0(n), slope_k(n), min_fn(n), ft_at_min_fn(n), max_pull_off(n), ftmax(n),
-        ft_end_(n), fn_end(n), small_fn0(n), small_k(n), small_lc(n);
-    py::array_t<std::int8_t> sticky(n), small_ns(n), interior(n);
+        ft_end_(n), fn_end(n), small_fn0(n), small_k(n), small_lc(n), adm_ft(n), adm_fn(n), k0(n), pk(n),
+        pbound(n);
+    py::array_t<std::int8_t> sticky(n), small_ns(n), interior(n), adm_all(n), is_bound(n);
+    double* p_adm_ft = adm_ft.mutable_data();
+    double* p_adm_fn = adm_fn.mutable_data();
+    std::int8_t* p_adm_all = adm_all.mutable_data();
+    double* p_k0 = k0.mutable_data();
+    double* p_pk = pk.mutable_data();
+    double* p_pbound = pbound.mutable_data();
+    std::int8_t* p_is_bound = is_bound.mutable_data();
     py::array_t<std::int32_t> status(n), end(n), folds(n);
     struct raw_t {
       double *fn0, *k, *min_fn, *ft_min, *pull, *ftmax, *ft_end, *fn_end, *sfn0, *sk, *slc;
@@ -291,6 +339,13 @@ void bind_seta(py::module_& m) {
         r.status[i] = static_cast<std::int32_t>(c.status);
         r.end[i] = how == characteristics_depth::whole_line ? static_cast<std::int32_t>(c.end) : -1;
         r.folds[i] = c.folds;
+        p_adm_ft[i] = c.admissible_end_ft;
+        p_adm_fn[i] = c.admissible_end_fn;
+        p_adm_all[i] = static_cast<std::int8_t>(c.admissible_to_end);
+        p_k0[i] = c.slope_at_zero;
+        p_pk[i] = c.paper_k;
+        p_pbound[i] = c.max_pull_off_bound;
+        p_is_bound[i] = static_cast<std::int8_t>(c.max_pull_off_is_bound);
       }
     }
     py::dict d;
@@ -311,6 +366,13 @@ void bind_seta(py::module_& m) {
     d["small_slope_k"] = small_k;
     d["small_contact_length"] = small_lc;
     d["small_non_sticky"] = small_ns;
+    d["admissible_end_ft"] = adm_ft;
+    d["admissible_end_fn"] = adm_fn;
+    d["admissible_to_end"] = adm_all;
+    d["slope_at_zero"] = k0;
+    d["paper_k"] = pk;
+    d["max_pull_off_bound"] = pbound;
+    d["max_pull_off_is_bound"] = is_bound;
     return d;
   }, py::arg("designs"), py::arg("depth") = 2, py::arg("threads") = 1);
 
@@ -346,6 +408,7 @@ void bind_seta(py::module_& m) {
 
   m.def("seta_shape", [](const darray& params, double Ft, int steps) {
     const auto s = design_from(params);
+    if (steps < 1) throw std::invalid_argument("gecko: steps must be >= 1 (points per segment)");
     seta_shape<double> sh;
     critical_state<double> st;
     {
@@ -359,8 +422,13 @@ void bind_seta(py::module_& m) {
     d["z"] = py::array_t<double>(static_cast<py::ssize_t>(sh.z.size()), sh.z.data());
     d["theta"] = py::array_t<double>(static_cast<py::ssize_t>(sh.theta.size()), sh.theta.data());
     d["closing_error"] = sh.closing_error;
+    d["max_closing_error"] = sh.max_closing_error;
+    d["error_estimate"] = sh.error_estimate;
+    d["shape_status"] = sh.status;
     d["status"] = static_cast<int>(st.status);
     d["Fn"] = st.Fn;
+    d["min_z"] = st.min_z;
+    d["max_axial_strain"] = st.max_axial_strain;
     return d;
   }, py::arg("params"), py::arg("Ft"), py::arg("steps") = 200);
 

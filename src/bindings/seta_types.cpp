@@ -150,6 +150,8 @@ void bind_enums(py::module_& m) {
       .value("range_end", minimum_status::range_end)
       .value("line_incomplete", minimum_status::line_incomplete)
       .value("not_certified", minimum_status::not_certified)
+      .value("admissible_end", minimum_status::admissible_end)
+      .value("no_admissible_state", minimum_status::no_admissible_state)
       .finalize();
   py::native_enum<fit_status>(m, "FitStatus", "enum.IntEnum", "Outcome of a Levenberg-Marquardt fit.")
       .value("converged", fit_status::converged)

@@ -28,7 +28,9 @@ def slope(x, y):
 
 
 def converged(line):
-    assert np.all(line.status == 0), line.status
+    # solved: 0, or 7 (solved, but the seta crosses the substrate: the reference design does near
+    # (Ft)max; its Fn is kept and is what these tests measure)
+    assert np.all(np.isin(line.status, (0, 7))), line.status
     return line.Fn
 
 

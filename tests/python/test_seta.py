@@ -56,7 +56,8 @@ def test_matches_mpmath_references():
         Ft = np.array([float(r["Ft"]) for r in rs])
         line = s.critical_line(Ft=Ft)
         ref = np.array([float(r["Fn"]) for r in rs])
-        assert np.all(line.status == 0)
+        # 7: solved, but the seta crosses the substrate there (values kept; accuracy still holds)
+        assert np.all(np.isin(line.status, (0, 7)))
         err = np.abs(line.Fn - ref) / np.maximum(1.0, np.abs(ref))
         worst = max(worst, err.max())
         np.testing.assert_array_equal(line.turning_points_beam, [int(r["turning_points_seg1"]) for r in rs])
@@ -107,10 +108,12 @@ def test_traced_line_and_characteristics():
 
 
 def test_traced_nodes_carry_a_status():
-    # Reference scene: every node re-solved (status 0) and equal to the state solved at its Ft.
+    # Reference scene: every node re-solved (status 0) and equal to the state solved at its Ft; the
+    # end node at (Ft)max is solved too but inadmissible (7: the joint dips below the substrate).
     s = gecko.TwoLevelSeta()
     line = s.critical_line()
-    assert line.status.dtype == np.int32 and np.all(line.status == 0)
+    assert line.status.dtype == np.int32 and np.all(line.status[:-1] == 0) and line.status[-1] == 7
+    assert line.Ft[-1] == s.ft_max and line.min_z[-1] < 0
     pick = np.arange(1, len(line.Ft), max(1, len(line.Ft) // 12))
     at = s.critical_line(Ft=line.Ft[pick])
     np.testing.assert_allclose(at.Fn, line.Fn[pick], rtol=1e-12, atol=1e-12)
@@ -126,7 +129,8 @@ def test_traced_nodes_carry_a_status():
                            EA2=3183.8725667297713, l2=0.02038078921865084, alpha1=0.5386040251416762,
                            alpha2=1.0098973821140953)
     line = s.critical_line()
-    assert set(np.unique(line.status)) <= {0, 1} and np.any(line.status == 1) and line.status[0] == 0
+    # (7: solved, but this seta crosses the substrate already at rest)
+    assert set(np.unique(line.status)) <= {0, 1, 7} and np.any(line.status == 1) and line.status[0] in (0, 7)
     assert np.all(np.isfinite(line.Fn)) and np.all(np.isfinite(line.theta_joint))
 
 
@@ -219,3 +223,75 @@ def test_shape():
     sh = s.shape(5.0, steps=200)
     assert sh["status"] == 0 and len(sh["x"]) == 401
     assert abs(sh["closing_error"]) < 1e-10 and sh["z"][-1] == 0.0 and sh["z"][0] > 0
+
+
+# ---- admissibility, exact shapes, unbounded lines, the paper's k, bad input (issue 13) ----------
+
+def test_inadmissible_states_get_status_7_with_values_kept():
+    s = gecko.TwoLevelSeta(alpha2=1.0)
+    line = s.critical_line(Ft=[0.0, 5.0, 9.999])
+    assert list(line.status) == [0, 0, 7]
+    assert np.isfinite(line.Fn).all() and np.isfinite(line.theta_joint).all()
+    assert line.min_z[0] == 0.0 and -5e-3 < line.min_z[2] < -5e-4
+    assert abs(line.min_z_at[2] - s.l1) < 1e-12          # the joint is the lowest point
+    assert gecko.STATUS[7].startswith("inadmissible")
+    # every API: the traced line, the batch, the one-state solve
+    assert 7 in set(s.critical_line().status.tolist())
+    b = gecko.critical_line_batch([s, gecko.TwoLevelSeta()], [5.0, 9.999])
+    assert b.status.tolist() == [[0, 7], [0, 0]] and np.isfinite(b.min_z).all()
+    assert s.solve(9.999)["status"] == 7
+
+
+def test_strain_limit():
+    s = gecko.TwoLevelSeta()
+    line = s.critical_line(Ft=[2.0, 9.0], strain_limit=0.1)
+    assert line.status.tolist() == [0, 7]
+    assert line.max_axial_strain[1] > 0.1
+    assert abs(s.critical_line(Ft=[s.ft_max]).max_axial_strain[0] - 0.2) < 1e-12  # 20 % at (Ft)max
+    with pytest.raises(ValueError, match="strain_limit"):
+        s.critical_line(Ft=[1.0], strain_limit=float("nan"))
+    c = s.characteristics(strain_limit=0.1)
+    assert c.min_status == "admissible_end" and c.admissible_end_ft <= 5.0 + 1e-9
+
+
+def test_characteristics_admissible_part_bound_and_k():
+    c = gecko.TwoLevelSeta().characteristics()
+    assert not c.admissible_to_end and 9.99 < c.admissible_end_ft < 10.0
+    assert c.min_status == "stationary" and abs(c.max_pull_off - 2.8024125) < 1e-6
+    assert c.slope_k == c.slope_at_zero and c.slope_at_zero < c.paper_k < 0
+    for ea2 in (math.inf, 1e300):
+        s = gecko.TwoLevelSeta(EA2=ea2)
+        c = s.characteristics()
+        assert math.isnan(c.max_pull_off) and c.max_pull_off_is_bound, ea2
+        t = gecko.sweep([s], outputs=["max_pull_off", "max_pull_off_is_bound"], progress=False)
+        assert math.isnan(t["max_pull_off"].iloc[0])           # characteristics() and sweep() agree
+
+
+def test_shape_is_exact_and_reports_its_errors():
+    s = gecko.TwoLevelSeta()
+    a, b = s.shape(5.0, steps=7), s.shape(5.0, steps=700)
+    assert a["shape_status"] == 0 and b["shape_status"] == 0
+    assert a["max_closing_error"] < 1e-10 and a["error_estimate"] < 1e-10
+    np.testing.assert_allclose(a["z"], b["z"][::100], rtol=0, atol=1e-11)
+    with pytest.raises(ValueError, match="steps"):
+        s.shape(5.0, steps=0)
+
+
+def test_bad_input_is_refused_not_clipped():
+    s = gecko.TwoLevelSeta()
+    with pytest.raises(ValueError, match="ft_end"):
+        s.characteristics(ft_end=float("nan"))
+    with pytest.raises(ValueError, match="ft_end"):
+        s.critical_line(ft_end=float("nan"))
+    with pytest.raises(ValueError, match="Ft"):
+        s.shape(s.ft_max * 1.01)
+    with pytest.raises(ValueError, match="Ft"):
+        s.sensitivities([[1.0, 2.0]])
+    with pytest.raises(ValueError, match="shape"):
+        gecko.critical_line_batch(np.ones((3, 6)), [1.0])
+    with pytest.raises(ValueError, match="Ft"):
+        gecko.critical_line_batch([s], [[1.0], [2.0]])
+    with pytest.raises(ValueError, match="Ft"):
+        s.small_deformation_fn([0.0, float("nan")])
+    with pytest.raises(ValueError, match="Ft"):
+        s.solve(float("nan"))

@@ -71,7 +71,7 @@ def test_given_up_line_says_not_reached(row):
     except subprocess.TimeoutExpired:
         pytest.fail(f"no answer within 20 s for Ft = {row['Ft']}")
     status, Fn, beta = int(out[0]), float(out[1]), float(out[2])
-    assert status in (0, 6), status
+    assert status in (0, 6, 7), status
     assert gecko.STATUS[6].startswith("not reached")
     if status == 6:
         assert math.isnan(Fn) and math.isnan(beta)
@@ -94,7 +94,7 @@ def test_beta_where_the_double_verifier_is_inconclusive():
     assert rows
     for r in rows:
         line = gecko.TwoLevelSeta(**_design(r)).critical_line(Ft=[float(r["Ft"])], errors="nan")
-        assert line.status[0] == 0
+        assert line.status[0] in (0, 7)  # 7: solved, values kept (the seta crosses the substrate)
         Fn_star, beta_star = float(r["Fn_star"]), float(r["beta_star"])
         # gecko to 1e-12 (measured: ~2e-15), although the double shot's dbeta/dFn is ~1e7 there
         assert abs(line.Fn[0] - Fn_star) <= 1e-12 * max(1.0, abs(Fn_star)), (r, line.Fn[0])

@@ -13,9 +13,10 @@
 // 2 pi), or at a segment end.
 //   * Fast, exact test (almost every state): when theta stays in [-pi/2, pi/2] along both segments
 //     (and 1 + T/EA > 0), z decreases monotonically from the base to the edge, so min z = 0 at the
-//     edge. Theta's range on a segment is that of its ends plus the turning points inside (the
-//     solver's counts): on a segment without turning points it costs a few comparisons, no
-//     trigonometry beyond one sincos for the strain.
+//     edge. Theta's range on a segment is that of its ends plus the turning angles reached inside
+//     (the solver's turning-point counts; the angles from the first integral, eq (8)): without
+//     turning points it costs a few comparisons and one sincos for the strain, with them an atan2
+//     and an asin.
 //   * Otherwise z is evaluated at every segment end and every crossing of theta = pi/2 + k pi, by
 //     integrating dz = -(1 + T/EA) cos(theta) dtheta / theta' over the monotone pieces of theta
 //     (split at the turning points theta* where theta' = 0, eq (8)'s first integral
@@ -348,35 +349,13 @@ inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const 
   const T M1 = d.EI1 * rate_j1 * rate_j1 / 2 + N * v + d.c1 * N * N * v * v / 2;
   const auto g1 = make_height_segment(d.EI1, d.c1, M1, N, phi);
   const auto g2 = make_height_segment(d.EI2, d.c2, M2, N, phi);
-  const T tol = T(1e-13) * L;
-  T s = 0, z = 0;
-  T zmin = 0, smin = 0;  // the base, at z = 0 before the shift
-  auto visit = [&](T ss, T zz) {
-    if (zz < zmin) {
-      zmin = zz;
-      smin = ss;
-    }
-  };
-  // theta range per segment for the strain
+  // theta's range on each segment: its ends and the turning angles reached (n >= 2 turning points
+  // reach both ends of the libration window, one the one theta' runs into first).
   T lo1 = d.alpha1, hi1 = d.alpha1, lo2 = beta, hi2 = beta;
   auto track = [&](T& lo, T& hi, T th) {
     if (th < lo) lo = th;
     if (th > hi) hi = th;
   };
-  bool ok = true;
-  {
-    T s_prev = s;
-    auto vis1 = [&](T ss, T zz) { visit(ss, zz); };
-    ok = height_walk(g1, d.alpha1, q, th_j1, n1, tol, s, z, vis1) && ok;
-    if (fabs(s - s_prev - d.l1) > T(1e-9) * L) ok = false;
-  }
-  {
-    T s_prev = s;
-    auto vis2 = [&](T ss, T zz) { visit(ss, zz); };
-    ok = height_walk(g2, beta, p, half_pi, n2, tol, s, z, vis2) && ok;
-    if (fabs(s - s_prev - free2) > T(1e-9) * L) ok = false;
-  }
-  // theta ranges: ends and turning angles reached
   track(lo1, hi1, th_j1);
   track(lo2, hi2, half_pi);
   auto turning_range = [&](const height_segment<T>& g, T th_s, T rate_s, int n, T& lo, T& hi) {
@@ -397,6 +376,33 @@ inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const 
   T strain = segment_max_strain(d.c1, N, phi, lo1, hi1);
   const T s2 = segment_max_strain(d.c2, N, phi, lo2, hi2);
   if (s2 > strain) strain = s2;
+  if (strain < 1 && lo1 >= -half_pi && hi1 <= half_pi && lo2 >= -half_pi && hi2 <= half_pi) {
+    // Turning points, but theta stays within [-pi/2, pi/2]: z is monotone all the same.
+    r.min_z = 0;
+    r.where = a_edge;
+    r.exact_fast_path = true;
+    return finish(strain);
+  }
+  const T tol = T(1e-13) * L;
+  T s = 0, z = 0;
+  T zmin = 0, smin = 0;  // the base, at z = 0 before the shift
+  auto visit = [&](T ss, T zz) {
+    if (zz < zmin) {
+      zmin = zz;
+      smin = ss;
+    }
+  };
+  bool ok = true;
+  {
+    T s_prev = s;
+    ok = height_walk(g1, d.alpha1, q, th_j1, n1, tol, s, z, visit) && ok;
+    if (fabs(s - s_prev - d.l1) > T(1e-9) * L) ok = false;
+  }
+  {
+    T s_prev = s;
+    ok = height_walk(g2, beta, p, half_pi, n2, tol, s, z, visit) && ok;
+    if (fabs(s - s_prev - free2) > T(1e-9) * L) ok = false;
+  }
   if (!ok || !(strain < 1)) {
     // The decomposition did not close, or the stretch 1 + T/EA reaches 0: no verdict on z.
     r.max_axial_strain = strain;

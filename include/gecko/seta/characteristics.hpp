@@ -50,13 +50,33 @@ enum class minimum_status : int {
   range_end = 2,        // at the end of the followed range ((Ft)max or the requested end)
   line_incomplete = 3,  // the line stopped before the end of the range (see `end`): the values are
                         // the minimum over the followed part only
-  not_certified = 4     // a minimum could not be refined or its slope not verified: NaN values
+  not_certified = 4,    // a minimum could not be refined or its slope not verified: NaN values
+  admissible_end = 5,   // at the end of the admissible part of the line (admissible_end_ft): beyond
+                        // it the seta crosses the substrate (or the strain limit), see below
+  no_admissible_state = 6  // already the natural state is inadmissible: NaN values
 };
 
 template <class T>
 struct seta_characteristics {
   T fn0 = std::numeric_limits<T>::quiet_NaN();
+  // dFn/dFt at Ft = 0: the exact tangent of the line at the natural state.
+  T slope_at_zero = std::numeric_limits<T>::quiet_NaN();
+  // Deprecated alias of slope_at_zero (kept for existing callers; it is not the paper's k).
   T slope_k = std::numeric_limits<T>::quiet_NaN();
+  // The paper's k (paper 001 eq (16): Fn = (Fn)0 + k Ft, "the slope of the straight line" of the
+  // lower, bending-dominated part of the critical line): the least-squares slope of a straight
+  // line through the natural state (0, (Fn)0) fitted to the line over its lower part, Ft from 0
+  // to the Ft of the max pull-off (where the axial-dominated upper part begins):
+  //     k = int_0^Ft* Ft (Fn(Ft) - (Fn)0) dFt / int_0^Ft* Ft^2 dFt,
+  // by 16-point Gauss-Legendre on exact states (first crossings along the line). NaN where the
+  // line has no lower part (the minimum at Ft = 0) or its minimum was not established.
+  T paper_k = std::numeric_limits<T>::quiet_NaN();
+  // The max pull-off at the end of the followed range, where that end is not the line's own end
+  // ((Ft)max): the maximum is not established (EA2 = inf has no (Ft)max; a line given up early).
+  // Then max_pull_off is NaN and max_pull_off_bound = max(0, -min Fn over the followed range), a
+  // lower bound of the line's max pull-off, with max_pull_off_is_bound = true.
+  bool max_pull_off_is_bound = false;
+  T max_pull_off_bound = std::numeric_limits<T>::quiet_NaN();
   T min_fn = std::numeric_limits<T>::quiet_NaN();       // most tensile critical Fn on the line
   T ft_at_min_fn = std::numeric_limits<T>::quiet_NaN();
   bool min_fn_interior = false;   // true: a verified stationary minimum (min_status stationary)
@@ -72,6 +92,15 @@ struct seta_characteristics {
   line_end end = line_end::no_natural_state;
   std::vector<T> folds;
   small_deformation_line<T> small;  // the linear theory's (Fn)0, k, contact length, criterion
+  // The admissible part of the line (gecko/seta/admissibility.hpp): from Ft = 0 along the line to
+  // the first state where the seta crosses the substrate (or exceeds the strain limit). The max
+  // pull-off is the minimum of Fn over this part only: it never comes from an inadmissible state.
+  // admissible_to_end: the whole followed line is admissible (admissible_end_ft is then the Ft of
+  // the line's end); else admissible_end_ft / _fn locate the boundary (refined along the line to
+  // ~1e-10 of its arclength), NaN when the natural state itself is inadmissible.
+  bool admissible_to_end = false;
+  T admissible_end_ft = std::numeric_limits<T>::quiet_NaN();
+  T admissible_end_fn = std::numeric_limits<T>::quiet_NaN();
 };
 
 namespace detail {
@@ -221,6 +250,8 @@ class segment_probe {
 template <class T>
 struct line_minimum {
   T mu, fn, slope;  // line parameter, Fn, dFn/dmu there
+  bool has_state = false;
+  Eigen::Matrix<T, 4, 1> z;  // the state (Fn, beta, p, q) of the two-level seta
 };
 
 // Refine the minimum of Fn on the segment after node i, where dFn/ds changes sign from - to +.
@@ -298,14 +329,66 @@ inline bool refine_segment_minimum(const System& sys, const traced_line<System>&
   out.mu = best_x[n];
   out.fn = z[0];
   out.slope = d;
+  if constexpr (n == 4) {
+    out.z = z;
+    out.has_state = true;
+  }
   return true;
+}
+
+// Is the state z at line parameter mu admissible (gecko/seta/admissibility.hpp)?
+template <class System>
+inline bool state_admissible(const System& sys, const typename System::vec& z, typename System::value_type mu,
+                             const typename System::plan_type& plan) {
+  using T = typename System::value_type;
+  critical_state<T> st;
+  st.Ft = sys.ft_of(mu);
+  st.Fn = z[0];
+  st.theta_joint = sys.theta_joint(z);
+  st.theta_rate_joint = sys.rate_joint(z);
+  st.theta_rate_base = sys.rate_base(z);
+  sys.turning_points(plan, z, mu, st.turning_points_beam, st.turning_points_spatula);
+  st.status = critical_status::converged;
+  apply_admissibility(sys, st);
+  return st.status == critical_status::converged;
+}
+
+// The boundary of the admissible part on the segment after node i (node i admissible, i + 1 not):
+// bisection in the chord parameter sigma of segment_probe. sigma_out: the last admissible sigma
+// found, x_out its state. False when the segment cannot be probed (then node i is the boundary).
+template <class System, class T>
+inline bool refine_admissible_end(const System& sys, const traced_line<System>& line, std::size_t i, T scale,
+                                  typename segment_probe<System>::xvec& x_out) {
+  const T tol = std::max(T(1e-13), 64 * std::numeric_limits<T>::epsilon());
+  const segment_probe<System> probe(sys, line, i, scale, tol);
+  if (!probe.valid()) return false;
+  using xvec = typename segment_probe<System>::xvec;
+  constexpr int n = System::n;
+  T a = 0, b = probe.length();
+  bool have = false;
+  xvec x;
+  typename System::plan_type plan;
+  for (int it = 0; it < 60 && b - a > T(1e-10) * probe.length(); ++it) {
+    const T m = (a + b) / 2;
+    T g;
+    if (!probe.at(m, x, plan, g)) return have;
+    const typename System::vec z = x.template head<n>();
+    if (state_admissible(sys, z, x[n], sys.plan(z, x[n]))) {
+      a = m;
+      x_out = x;
+      have = true;
+    } else {
+      b = m;
+    }
+  }
+  return have;
 }
 
 template <class Policy, bool E1, bool E2, class T>
 inline seta_characteristics<T> characteristics_imp(const TwoLevelSeta<T>& s, const critical_line_options<T>& opt) {
   using System = seta_system<T, Policy, E1, E2>;
   constexpr int n = System::n;
-  const System sys(make_seta_params(s));
+  const System sys(make_seta_params(s), opt.strain_limit);
   seta_characteristics<T> c;
   c.small = small_deformation(s, Policy());
   c.ft_max = ft_max(s);
@@ -329,17 +412,50 @@ inline seta_characteristics<T> characteristics_imp(const TwoLevelSeta<T>& s, con
     auto z = z0;
     auto plan = plan0;
     T d;
-    if (slope_at(sys, z, T(0), plan, d)) c.slope_k = d;
+    if (slope_at(sys, z, T(0), plan, d)) c.slope_at_zero = c.slope_k = d;
   }
   const auto& nodes = line.nodes;
   c.ft_at_line_end = sys.ft_of(nodes.back().Ft);
   c.fn_at_line_end = nodes.back().z[0];
-  // Candidates: the two ends of the followed range, and every interior minimum (dFn/ds from - to +
-  // between consecutive nodes; the tangents are oriented along the line).
-  const std::size_t last = nodes.size() - 1;
+  // The admissible part: nodes [0, first_bad), and on the segment (first_bad - 1, first_bad) up to
+  // the refined boundary.
+  std::size_t first_bad = nodes.size();
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    if (!state_admissible(sys, nodes[i].z, nodes[i].Ft, line.plans[i])) {
+      first_bad = i;
+      break;
+    }
+  if (first_bad == 0) {
+    c.min_status = minimum_status::no_admissible_state;
+    return c;
+  }
+  c.admissible_to_end = first_bad == nodes.size();
+  T bound_mu = nodes[first_bad - 1].Ft, bound_fn = nodes[first_bad - 1].z[0];
+  if (c.admissible_to_end) {
+    c.admissible_end_ft = c.ft_at_line_end;
+    c.admissible_end_fn = c.fn_at_line_end;
+  } else {
+    typename segment_probe<System>::xvec xb;
+    if (refine_admissible_end(sys, line, first_bad - 1, scale, xb)) {
+      bound_mu = xb[n];
+      bound_fn = xb[0];
+    }
+    c.admissible_end_ft = sys.ft_of(bound_mu);
+    c.admissible_end_fn = bound_fn;
+  }
+  // Candidates: the two ends of the followed (admissible) range, and every interior minimum
+  // (dFn/ds from - to + between consecutive nodes; the tangents are oriented along the line).
+  const std::size_t last = c.admissible_to_end ? nodes.size() - 1 : first_bad - 1;
   T min_fn = nodes[0].z[0], min_mu = nodes[0].Ft, min_slope = c.slope_k;
   minimum_status kind = minimum_status::range_start;
-  if (last > 0 && nodes[last].z[0] < min_fn) {
+  if (!c.admissible_to_end) {
+    if (bound_fn < min_fn) {
+      min_fn = bound_fn;
+      min_mu = bound_mu;
+      min_slope = std::numeric_limits<T>::quiet_NaN();
+      kind = minimum_status::admissible_end;
+    }
+  } else if (last > 0 && nodes[last].z[0] < min_fn) {
     min_fn = nodes[last].z[0];
     min_mu = nodes[last].Ft;
     const T dmu = dft_dmu(sys, min_mu);
@@ -349,13 +465,22 @@ inline seta_characteristics<T> characteristics_imp(const TwoLevelSeta<T>& s, con
     kind = minimum_status::range_end;
   }
   bool certified = true;
-  for (std::size_t i = 0; i < last; ++i) {
+  const std::size_t seg_end = c.admissible_to_end ? last : first_bad;  // segments [0, seg_end)
+  for (std::size_t i = 0; i < seg_end; ++i) {
     const T ta = nodes[i].tangent[0], tb = nodes[i + 1].tangent[0];
     if (!(ta < 0 && tb >= 0)) continue;
     line_minimum<T> m;
     if (!refine_segment_minimum(sys, line, i, scale, m)) {
-      certified = false;
+      // On the boundary segment, a minimum beyond the boundary is not needed.
+      if (i + 1 != first_bad) certified = false;
       continue;
+    }
+    if (i + 1 == first_bad) {
+      // The boundary segment: the minimum counts only where the state is admissible.
+      typename System::vec zm;
+      if (!m.has_state) continue;
+      zm = m.z;
+      if (!state_admissible(sys, zm, m.mu, sys.plan(zm, m.mu))) continue;
     }
     if (m.fn < min_fn) {
       min_fn = m.fn;
@@ -365,9 +490,9 @@ inline seta_characteristics<T> characteristics_imp(const TwoLevelSeta<T>& s, con
     }
   }
   // Every node lies on the line: one below the minimum found means a minimum was missed (two
-  // sign changes of dFn/ds between two nodes).
-  for (const auto& node : nodes)
-    if (node.z[0] < min_fn - T(64) * std::numeric_limits<T>::epsilon() * std::max(T(1), fabs(min_fn)))
+  // sign changes of dFn/ds between two nodes). Only the admissible nodes count.
+  for (std::size_t i = 0; i <= last && i < nodes.size(); ++i)
+    if (nodes[i].z[0] < min_fn - T(64) * std::numeric_limits<T>::epsilon() * std::max(T(1), fabs(min_fn)))
       certified = false;
   if (!certified) {
     c.min_status = minimum_status::not_certified;
@@ -375,12 +500,41 @@ inline seta_characteristics<T> characteristics_imp(const TwoLevelSeta<T>& s, con
   }
   const bool complete = line.end == line_end::reached_ft_end || line.end == line_end::reached_ft_max ||
                         line.end == line_end::turned_back;
-  c.min_status = complete ? kind : minimum_status::line_incomplete;
+  c.min_status = complete || !c.admissible_to_end ? kind : minimum_status::line_incomplete;
   c.min_fn = min_fn;
   c.ft_at_min_fn = sys.ft_of(min_mu);
   c.slope_at_min_fn = min_slope;
   c.min_fn_interior = kind == minimum_status::stationary;
   c.max_pull_off = c.min_fn < 0 ? -c.min_fn : T(0);
+  if (c.min_status == minimum_status::line_incomplete ||
+      (c.min_status == minimum_status::range_end && line.end != line_end::reached_ft_max)) {
+    c.max_pull_off_bound = c.max_pull_off;
+    c.max_pull_off_is_bound = true;
+    c.max_pull_off = std::numeric_limits<T>::quiet_NaN();
+  }
+  // The paper's k (eq (16)) over the lower part [0, Ft*].
+  const T ft_star = c.ft_at_min_fn;
+  if (ft_star > 0 && c.fn0 == c.fn0 &&
+      (c.min_status == minimum_status::stationary || c.min_status == minimum_status::admissible_end ||
+       c.min_status == minimum_status::range_end)) {
+    const auto& q = gauss_legendre16<T>::get();
+    T ft[16];
+    std::size_t which[16];
+    critical_state<T> st[16];
+    for (int i = 0; i < 16; ++i) {
+      ft[i] = ft_star * q.x[i];
+      which[i] = static_cast<std::size_t>(i);
+    }
+    evaluate_line(sys, line, ft, 16, which, opt.tolerance, st);
+    T num = 0;
+    bool ok = true;
+    for (int i = 0; i < 16; ++i) {
+      if (st[i].status != critical_status::converged) ok = false;
+      num += q.w[i] * ft[i] * (st[i].Fn - c.fn0);
+    }
+    // int_0^Ft* Ft (Fn - Fn0) dFt = Ft* * sum w_i Ft_i (Fn_i - Fn0); int_0^Ft* Ft^2 dFt = Ft*^3/3
+    if (ok) c.paper_k = 3 * num / (ft_star * ft_star);
+  }
   return c;
 }
 

@@ -54,8 +54,14 @@ struct design_characteristics {
   critical_status status = critical_status::invalid_input;
   // natural_state and whole_line
   T fn0 = std::numeric_limits<T>::quiet_NaN();
-  T slope_k = std::numeric_limits<T>::quiet_NaN();
+  T slope_k = std::numeric_limits<T>::quiet_NaN();  // = slope_at_zero (deprecated name)
+  T slope_at_zero = std::numeric_limits<T>::quiet_NaN();
   bool sticky_at_rest = false;
+  // whole_line: the paper's k (seta_characteristics::paper_k) and the bound of a max pull-off at
+  // the end of the followed range (max_pull_off NaN then, see seta_characteristics)
+  T paper_k = std::numeric_limits<T>::quiet_NaN();
+  bool max_pull_off_is_bound = false;
+  T max_pull_off_bound = std::numeric_limits<T>::quiet_NaN();
   // whole_line, when the natural state was found
   T min_fn = std::numeric_limits<T>::quiet_NaN();
   T ft_at_min_fn = std::numeric_limits<T>::quiet_NaN();
@@ -64,6 +70,10 @@ struct design_characteristics {
   T ft_at_line_end = std::numeric_limits<T>::quiet_NaN();
   T fn_at_line_end = std::numeric_limits<T>::quiet_NaN();
   int folds = 0;
+  // whole_line: where the admissible part of the line ends (gecko/seta/characteristics.hpp)
+  bool admissible_to_end = false;
+  T admissible_end_ft = std::numeric_limits<T>::quiet_NaN();
+  T admissible_end_fn = std::numeric_limits<T>::quiet_NaN();
   // whole_line, whatever the status (no_natural_state when no line was followed)
   line_end end = line_end::no_natural_state;
   // every depth, for an admissible design
@@ -100,6 +110,7 @@ inline design_characteristics<T> characteristics_to_depth_imp(const TwoLevelSeta
   r.small = c.small;
   r.fn0 = c.fn0;
   r.slope_k = c.slope_k;
+  r.slope_at_zero = c.slope_at_zero;
   const bool found = r.status == critical_status::converged;
   r.sticky_at_rest = found && c.sticky_at_rest;
   if (depth != characteristics_depth::whole_line) return r;
@@ -112,6 +123,12 @@ inline design_characteristics<T> characteristics_to_depth_imp(const TwoLevelSeta
   r.ft_at_line_end = c.ft_at_line_end;
   r.fn_at_line_end = c.fn_at_line_end;
   r.folds = static_cast<int>(c.folds.size());
+  r.admissible_to_end = c.admissible_to_end;
+  r.admissible_end_ft = c.admissible_end_ft;
+  r.admissible_end_fn = c.admissible_end_fn;
+  r.paper_k = c.paper_k;
+  r.max_pull_off_is_bound = c.max_pull_off_is_bound;
+  r.max_pull_off_bound = c.max_pull_off_bound;
   return r;
 }
 

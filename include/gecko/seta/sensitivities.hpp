@@ -38,7 +38,9 @@ inline void design_derivatives(const TwoLevelSeta<T>& s, const critical_state<T>
   const System sys(make_seta_params(s));
   out.dFn.fill(std::numeric_limits<T>::quiet_NaN());
   out.dtheta_joint.fill(std::numeric_limits<T>::quiet_NaN());
-  if (st.status != critical_status::converged) return;
+  // An inadmissible state (status 7) is a solution of the equations all the same: its derivatives
+  // are those of the equations' line there (the caller decides whether to use them).
+  if (st.status != critical_status::converged && st.status != critical_status::inadmissible) return;
   const auto z = sys.from_guess(st.Fn, st.theta_joint, st.theta_rate_joint, st.theta_rate_base, st.Ft);
   const T mu = sys.mu_of(st.Ft);
   const auto plan = sys.plan(z, mu);

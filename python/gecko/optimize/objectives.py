@@ -69,9 +69,13 @@ def _design_seta(p: np.ndarray) -> TwoLevelSeta:
         raise _EvaluationFailure(f"invalid design: {e}") from None
 
 
-def _sens(seta: TwoLevelSeta, ft):
+def _sens(seta: TwoLevelSeta, ft, allow_inadmissible: bool = False):
+    # Status 7 (the seta crosses the substrate there) is refused unless asked for: a pull-off
+    # never comes from an inadmissible state.
     s = seta.sensitivities(ft)
     solved = s["status"] == CriticalStatus.converged
+    if allow_inadmissible:
+        solved = solved | (s["status"] == CriticalStatus.inadmissible)
     if not np.all(solved) or not np.all(np.isfinite(s["dFn"])):
         bad = np.flatnonzero(~solved | ~np.all(np.isfinite(s["dFn"]), axis=1))
         raise _EvaluationFailure(f"critical state not solved at Ft = {np.atleast_1d(ft)[bad[0]]!r} "
@@ -105,6 +109,10 @@ def _max_pull_off(seta: TwoLevelSeta, **_):
     if not np.isfinite(c.min_fn):
         raise _EvaluationFailure(f"critical line not traced ({c.end})")
     _check_line_end(c.end_code, c.ft_at_line_end, seta.ft_max)
+    if c.min_status == "admissible_end":
+        raise _EvaluationFailure(f"max pull-off at the end of the admissible part of the line, Ft = "
+                                 f"{c.admissible_end_ft!r} (beyond it the seta crosses the substrate): "
+                                 "not stationary")
     ft_star = c.ft_at_min_fn
     scale = max(1.0, abs(c.min_fn))
     if not c.min_fn_interior and ft_star != 0.0:
@@ -139,7 +147,8 @@ def _refine_minimum(seta: TwoLevelSeta, scale: float):
     line = seta.critical_line()
     if line.folds:
         raise _EvaluationFailure("minimum not stationary and the line folds")
-    i = int(np.argmin(line.Fn))
+    # only admissible, re-solved nodes (status 0) can hold the minimum
+    i = int(np.argmin(np.where(line.status == CriticalStatus.converged, line.Fn, np.inf)))
     if not 0 < i < len(line.Ft) - 1:
         raise _EvaluationFailure("smallest traced Fn at an end of the line")
 
@@ -198,7 +207,7 @@ def _area(seta: TwoLevelSeta, nodes: int = 48, **_):
 
     def fn_at(x):
         st = seta.critical_line(Ft=[x])
-        if st.status[0] != CriticalStatus.converged:
+        if st.status[0] not in (CriticalStatus.converged, CriticalStatus.inadmissible):
             raise _EvaluationFailure(f"critical state not solved at Ft = {x!r}")
         return float(st.Fn[0])
 
@@ -230,7 +239,9 @@ def _area(seta: TwoLevelSeta, nodes: int = 48, **_):
         return 0.0, np.zeros(9), {"tensile_intervals": []}
     P, W = np.concatenate(pts), np.concatenate(wts)
     order = np.argsort(P)
-    s = _sens(seta, P[order])
+    # The area is that under the equations' line up to (Ft)max, including a tail where the seta
+    # crosses the substrate (status 7, e.g. the reference design beyond Ft ~ 9.9997).
+    s = _sens(seta, P[order], allow_inadmissible=True)
     fnv = np.empty_like(P)
     dfn = np.empty((P.size, 9))
     fnv[order] = s["Fn"]
