@@ -133,9 +133,10 @@ def design_dict(P):
 
 
 def verify_states(P, FT, Fn, beta, status, chunk=4000):
-    """Verify every status-0 state; returns per-state arrays (NaN where not verified)."""
+    """Verify every solved state (status 0, and 7, which keeps its values); returns per-state arrays
+    (NaN where not verified)."""
     n, m = FT.shape
-    rows, cols = np.nonzero(status == 0)
+    rows, cols = np.nonzero((status == 0) | (status == INADMISSIBLE))
     out = {k: np.full((n, m), np.nan) for k in ("dFn", "dbeta", "fn_uncert", "beta_uncert", "theta_err", "R", "S")}
     out["steps"] = np.zeros((n, m), dtype=np.int64)
     out["turns_beam"] = np.full((n, m), -1, dtype=np.int64)
