@@ -9,6 +9,11 @@
 // (gecko/core/parallel.hpp), threads_for(n, ufunc_threads) of them: every element is computed by
 // the same code whatever the split, so results are bitwise identical for any thread count. numpy
 // has released the GIL around the inner loop already (no object dtypes), so none is touched here.
+//
+// SIMD: the float64 loops of F, E and R_F run the vector kernels of elliptic_simd.hpp at the level
+// picked once at import (the best the CPU has, or GECKO_SIMD=scalar|sse|avx2|avx512, or
+// set_simd_level); every element's result is independent of its neighbours there as well, so the
+// bitwise thread independence holds at every level.
 #include "bindings.hpp"
 
 #define NPY_NO_DEPRECATED_API NPY_1_7_API_VERSION
@@ -17,11 +22,13 @@
 
 #include <atomic>
 #include <cstddef>
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "gecko/core/parallel.hpp"
+#include "elliptic_simd.hpp"
 #include "gecko/elliptic.hpp"
 #include "vectorize.hpp"
 
@@ -37,10 +44,12 @@ std::atomic<int> ufunc_threads{0};
 
 struct kernel_f {
   static constexpr const char* name = "ellint_f";
+  static constexpr simd::batch_fn simd::kernels::*simd_slot = &simd::kernels::ellint_f;
   template <class T, class P> static T eval(T p, T m, P pol) { return gecko::ellint_f(p, m, pol); }
 };
 struct kernel_e {
   static constexpr const char* name = "ellint_e";
+  static constexpr simd::batch_fn simd::kernels::*simd_slot = &simd::kernels::ellint_e;
   template <class T, class P> static T eval(T p, T m, P pol) { return gecko::ellint_e(p, m, pol); }
 };
 struct kernel_k {
@@ -49,6 +58,7 @@ struct kernel_k {
 };
 struct kernel_rf {
   static constexpr const char* name = "carlson_rf";
+  static constexpr simd::batch_fn simd::kernels::*simd_slot = &simd::kernels::carlson_rf;
   template <class T, class P> static T eval(T x, T y, T z, P pol) { return gecko::carlson_rf(x, y, z, pol); }
 };
 struct kernel_rd {
@@ -78,23 +88,113 @@ inline void run_range(char** args, const npy_intp* steps, npy_intp begin, npy_in
   }
 }
 
+// ---- SIMD level ------------------------------------------------------------------------------
+constexpr const char* level_names[] = {"scalar", "sse", "avx2", "avx512"};
+const simd::kernels* level_table[4] = {nullptr, nullptr, nullptr, nullptr};
+int best_level = simd::scalar;
+std::atomic<int> active_level{simd::scalar};
+
+void detect_levels() {
+#if defined(GECKO_SIMD_X86)
+  __builtin_cpu_init();
+  level_table[simd::sse] = simd::kernels_sse();  // SSE2 is part of x86-64
+  if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) level_table[simd::avx2] = simd::kernels_avx2();
+  if (__builtin_cpu_supports("avx512f")) level_table[simd::avx512] = simd::kernels_avx512();
+#endif
+  for (int l = simd::avx512; l > simd::scalar; --l)
+    if (level_table[l]) {
+      best_level = l;
+      break;
+    }
+}
+
+// Level by name ("auto": the best); -1 for an unknown name.
+int parse_level(const std::string& name) {
+  if (name == "auto") return best_level;
+  for (int l = 0; l < 4; ++l)
+    if (name == level_names[l]) return l;
+  return -1;
+}
+
+std::string available_levels() {
+  std::string s;
+  for (int l = 0; l < 4; ++l)
+    if (l == simd::scalar || level_table[l]) s += (s.empty() ? "" : ", ") + std::string(level_names[l]);
+  return s;
+}
+
+// The float64 batch kernel of K at the active level, or nullptr (scalar loop).
+template <class K, class T, class = void>
+struct simd_batch {
+  static simd::batch_fn get() { return nullptr; }
+};
+template <class K>
+struct simd_batch<K, double, std::void_t<decltype(K::simd_slot)>> {
+  static simd::batch_fn get() {
+    const simd::kernels* t = level_table[active_level.load(std::memory_order_relaxed)];
+    return t ? t->*K::simd_slot : nullptr;
+  }
+};
+
+template <class K, std::size_t... I>
+double lane_eval(const double* a, std::index_sequence<I...>) {
+  return K::eval(a[I]..., nan_policy());
+}
+template <class K, std::size_t Nin>
+double lane(const double* a) {
+  return lane_eval<K>(a, std::make_index_sequence<Nin>());
+}
+
+// The SIMD kernel over [begin, end): contiguous operands straight, strided ones through buffers.
+template <std::size_t Nin>
+void run_simd_range(simd::batch_fn fn, simd::lane_fn fallback, char** args, const npy_intp* steps,
+                    npy_intp begin, npy_intp end) {
+  bool contiguous = true;
+  for (std::size_t k = 0; k <= Nin; ++k) contiguous = contiguous && steps[k] == static_cast<npy_intp>(sizeof(double));
+  if (contiguous) {
+    const double* in[Nin];
+    for (std::size_t k = 0; k < Nin; ++k) in[k] = reinterpret_cast<const double*>(args[k]) + begin;
+    fn(in, reinterpret_cast<double*>(args[Nin]) + begin, static_cast<std::size_t>(end - begin), fallback);
+    return;
+  }
+  constexpr npy_intp chunk = 256;
+  double buf[Nin][chunk];
+  double res[chunk];
+  const double* in[Nin];
+  for (std::size_t k = 0; k < Nin; ++k) in[k] = buf[k];
+  for (npy_intp i = begin; i < end; i += chunk) {
+    const npy_intp n = end - i < chunk ? end - i : chunk;
+    for (std::size_t k = 0; k < Nin; ++k)
+      for (npy_intp j = 0; j < n; ++j) buf[k][j] = *reinterpret_cast<const double*>(args[k] + (i + j) * steps[k]);
+    fn(in, res, static_cast<std::size_t>(n), fallback);
+    for (npy_intp j = 0; j < n; ++j) *reinterpret_cast<double*>(args[Nin] + (i + j) * steps[Nin]) = res[j];
+  }
+}
+
 template <class K, class T, std::size_t Nin>
 void loop(char** args, const npy_intp* dims, const npy_intp* steps, void*) {
   const npy_intp n = dims[0];
   const auto seq = std::make_index_sequence<Nin>();
+  const simd::batch_fn vec = simd_batch<K, T>::get();  // one level for the whole call
+  const auto range = [&](npy_intp b, npy_intp e) {
+    if (vec)
+      run_simd_range<Nin>(vec, &lane<K, Nin>, args, steps, b, e);
+    else
+      run_range<K, T>(args, steps, b, e, seq);
+  };
   const unsigned nt = threads_for(static_cast<std::size_t>(n), ufunc_threads.load(std::memory_order_relaxed));
   if (nt <= 1) {
-    run_range<K, T>(args, steps, 0, n, seq);
+    range(0, n);
     return;
   }
   try {
     gecko::detail::parallel_for_blocks(static_cast<std::size_t>(n), nt, [&](std::size_t b, std::size_t e) {
-      run_range<K, T>(args, steps, static_cast<npy_intp>(b), static_cast<npy_intp>(e), seq);
+      range(static_cast<npy_intp>(b), static_cast<npy_intp>(e));
     });
   } catch (...) {
     // Only a failure to start a thread can get here (the kernels do not throw under nan_policy):
     // every block is recomputed serially, with identical results.
-    run_range<K, T>(args, steps, 0, n, seq);
+    range(0, n);
   }
 }
 
@@ -184,6 +284,34 @@ void bind_elliptic_ufuncs(py::module_& m) {
   add_scalar<kernel_rd, 3>(m, "carlson_rd_scalar");
   add_scalar<kernel_rj, 4>(m, "carlson_rj_scalar");
   add_scalar<kernel_rc, 2>(m, "carlson_rc_scalar");
+
+  // SIMD level of the float64 F, E and R_F loops: the best available, or GECKO_SIMD's.
+  detect_levels();
+  active_level.store(best_level);
+  if (const char* env = std::getenv("GECKO_SIMD")) {
+    const int l = parse_level(env);
+    if (l < 0 || !(l == simd::scalar || level_table[l])) {
+      const std::string msg = "GECKO_SIMD=" + std::string(env) + " is not available here (available: " +
+                              available_levels() + ", auto); using " + level_names[best_level];
+      if (PyErr_WarnEx(PyExc_RuntimeWarning, msg.c_str(), 1) < 0) throw py::error_already_set();
+    } else {
+      active_level.store(l);
+    }
+  }
+  m.def("set_simd_level", [](const std::string& name) {
+    const int l = parse_level(name);
+    if (l < 0 || !(l == simd::scalar || level_table[l]))
+      throw std::domain_error("gecko.elliptic.set_simd_level: level = '" + name +
+                              "' is not available on this machine: need one of " + available_levels() + ", auto");
+    return std::string(level_names[active_level.exchange(l)]);
+  }, py::arg("level"));
+  m.def("simd_level", [] { return std::string(level_names[active_level.load()]); });
+  m.def("simd_levels", [] {
+    py::list out;
+    for (int l = 0; l < 4; ++l)
+      if (l == simd::scalar || level_table[l]) out.append(level_names[l]);
+    return out;
+  });
 
   // Thread count of the ufunc loops: 0 automatic, k > 0 exactly k; returns the previous setting.
   m.def("set_ufunc_threads", [](int k) {
