@@ -50,6 +50,75 @@ def set_num_threads(threads: int) -> int:
     return _core.set_ufunc_threads(threads)
 
 
+def set_simd_level(level: str) -> str:
+    """Vector instruction set of the float64 loops of F, E and R_F (for tests and benchmarks).
+
+    At import the best level the CPU offers is chosen, or the one named by the environment
+    variable ``GECKO_SIMD`` (``scalar``, ``sse``, ``avx2``, ``avx512``). Every level gives the
+    same accuracy; results do not depend on the thread count at any level.
+
+    Parameters
+    ----------
+    level : {"scalar", "sse", "avx2", "avx512", "auto"}
+        ``scalar`` runs the one-element kernels; ``auto`` the best available level
+        (see :func:`simd_levels`).
+
+    Returns
+    -------
+    str
+        The previous level.
+
+    Raises
+    ------
+    ValueError
+        If the level is unknown or not available on this machine.
+
+    Examples
+    --------
+    >>> from gecko import elliptic
+    >>> before = elliptic.set_simd_level("scalar")
+    >>> elliptic.simd_level()
+    'scalar'
+    >>> elliptic.set_simd_level(before)
+    'scalar'
+    """
+    return _core.set_simd_level(level)
+
+
+def simd_level() -> str:
+    """The vector instruction set the float64 loops of F, E and R_F use now.
+
+    Returns
+    -------
+    str
+        One of ``scalar``, ``sse``, ``avx2``, ``avx512``.
+
+    Examples
+    --------
+    >>> from gecko import elliptic
+    >>> elliptic.simd_level() in elliptic.simd_levels()
+    True
+    """
+    return _core.simd_level()
+
+
+def simd_levels() -> list:
+    """The levels :func:`set_simd_level` accepts on this machine, lowest first.
+
+    Returns
+    -------
+    list of str
+        Always starts with ``scalar``.
+
+    Examples
+    --------
+    >>> from gecko import elliptic
+    >>> elliptic.simd_levels()[0]
+    'scalar'
+    """
+    return _core.simd_levels()
+
+
 # The kernel functions below are made by one template: plain Python scalars go to the compiled
 # scalar kernel directly (the ufunc machinery costs more than the kernel; floats with the default
 # errors are tested first, the cheapest test), anything else goes through the ufunc. The source

@@ -198,8 +198,17 @@ inline void rf_rd(vd x, vd y, vd z, vd& rf, vd& rd) {
 constexpr double pio2_below = 0x1.921fb54442d18p+0;
 constexpr double dbl_max = 0x1.fffffffffffffp+1023;
 
+// Lanes that are not NaN, and their arguments with NaN replaced by `benign`: the relational
+// compares (<, <=) signal invalid on NaN, and numpy would warn where the scalar kernels, which
+// test isnan first, stay quiet; == is a quiet compare.
+inline vi not_nan(vd x) { return x == x; }
+inline vd quiet(vd x, double benign) { return select(not_nan(x), x, splat(benign)); }
+
 // Legendre lanes on the vector path: |phi| <= pi/2 (finite), -DBL_MAX <= m <= 1 (not NaN).
-inline vi legendre_ok(vd phi, vd m) { return (vabs(phi) <= pio2_below) & (m <= 1.0) & (m >= -dbl_max); }
+inline vi legendre_ok(vd phi, vd m) {
+  const vd p = quiet(phi, 0.5), q = quiet(m, 0.5);
+  return not_nan(phi) & not_nan(m) & (vabs(p) <= pio2_below) & (q <= 1.0) & (q >= -dbl_max);
+}
 
 struct kernel_f {
   static constexpr int nin = 2;
@@ -243,12 +252,13 @@ struct kernel_rf {
   static constexpr int nin = 3;
   static constexpr double pad[3] = {1.0, 2.0, 0.5};
   static vd eval(const vd* a, vi& ok) {
-    const vd x = a[0], y = a[1], z = a[2];
+    const vi num = not_nan(a[0]) & not_nan(a[1]) & not_nan(a[2]);
+    const vd x = quiet(a[0], 1.0), y = quiet(a[1], 1.0), z = quiet(a[2], 1.0);
     const vd big = vmax(vmax(x, y), z);
     const vi zeros = (vi)(x == 0.0) + (vi)(y == 0.0) + (vi)(z == 0.0);  // -1 per zero
-    // x, y, z >= 0 (not NaN), at most one zero, and the largest in the window where
+    // not NaN, x, y, z >= 0, at most one zero, and the largest in the window where
     // gecko::carlson_rf does not rescale: 2^-967 <= largest < 2^1016 (carlson_scale_exponent)
-    ok = (x >= 0.0) & (y >= 0.0) & (z >= 0.0) & (zeros >= -1) & (big >= 0x1p-967) & (big < 0x1p+1016);
+    ok = num & (x >= 0.0) & (y >= 0.0) & (z >= 0.0) & (zeros >= -1) & (big >= 0x1p-967) & (big < 0x1p+1016);
     const vd one = splat(1.0);
     return rf_plain(select(ok, x, one), select(ok, y, one), select(ok, z, one));
   }
