@@ -16,7 +16,7 @@ from typing import NamedTuple
 
 from . import _core
 from ._vectorize import error_code as _error_code, flat_args as _flat_args, shaped as _shaped
-from ._vectorize import ERROR_CODES as _CODES, SCALAR_TYPES as _S, ufunc_call as _ufunc_call
+from ._vectorize import ERROR_CODES as _CODES, ufunc_call as _ufunc_call
 
 ufuncs = _core.ufuncs
 
@@ -119,19 +119,22 @@ def simd_levels() -> list:
     return _core.simd_levels()
 
 
-# The kernel functions below are made by one template: plain Python scalars go to the compiled
-# scalar kernel directly (the ufunc machinery costs more than the kernel; floats with the default
-# errors are tested first, the cheapest test), anything else goes through the ufunc. The source
-# is generated (as collections.namedtuple does) so that each function keeps its named positional
-# parameters and costs no more per call than a hand-written one; it is compiled in this module's
-# namespace, so doctest and inspect see ordinary module functions.
+# The kernel functions below are made by one template: plain Python scalars and 0-d float64
+# arrays go to the compiled scalar kernel directly (the ufunc machinery costs more than the
+# kernel; floats with the default errors are tested first, the cheapest test; _core.<name>_fast
+# sorts the rest in C and answers NotImplemented for arrays), anything else goes through the ufunc.
+# The source is generated (as collections.namedtuple does) so that each function keeps its named
+# positional parameters and costs no more per call than a hand-written one; it is compiled in this
+# module's namespace, so doctest and inspect see ordinary module functions.
 _KERNEL_TEMPLATE = """
-def _make(_ufunc, _scalar):
+def _make(_ufunc, _scalar, _fast):
     def {name}({params}, *, errors: str = "raise", **kwargs):
         if {floats} and errors == "raise" and not kwargs:
             return _scalar({params}, 0)
-        if not kwargs and {scalars} and errors in _CODES:
-            return _scalar({params}, _CODES[errors])
+        if not kwargs and errors in _CODES:
+            r = _fast({params}, _CODES[errors])
+            if r is not NotImplemented:
+                return r
         return _ufunc_call(_ufunc, _scalar, ({params},), {names!r}, errors, kwargs)
     return {name}
 """
@@ -142,11 +145,10 @@ def _kernel_function(name, params, doc):
     scalar kernel <name>_scalar."""
     src = _KERNEL_TEMPLATE.format(
         name=name, params=", ".join(params), names=tuple(params),
-        floats=" and ".join(f"type({p}) is float" for p in params),
-        scalars=" and ".join(f"type({p}) in _S" for p in params))
+        floats=" and ".join(f"type({p}) is float" for p in params))
     scope = {}
     exec(compile(src, f"<gecko.elliptic.{name}>", "exec"), globals(), scope)
-    f = scope["_make"](getattr(ufuncs, name), getattr(_core, name + "_scalar"))
+    f = scope["_make"](getattr(ufuncs, name), getattr(_core, name + "_scalar"), getattr(_core, name + "_fast"))
     f.__doc__ = doc
     f.__module__ = __name__
     return f

@@ -18,6 +18,7 @@
 
 #define NPY_NO_DEPRECATED_API NPY_1_7_API_VERSION
 #include <numpy/arrayobject.h>
+#include <numpy/arrayscalars.h>
 #include <numpy/ufuncobject.h>
 
 #include <atomic>
@@ -250,6 +251,60 @@ PyObject* scalar_fastcall(PyObject*, PyObject* const* args, Py_ssize_t nargs) {
   return call_scalar<K>(args, std::make_index_sequence<Nin>());
 }
 
+// The public functions' first stop for anything but two plain floats: Python float, int and
+// numpy float64 scalars give a Python float (as the scalar entry above); when any argument is a
+// 0-d float64 array and the others such scalars, a numpy float64 (what the ufunc returns for
+// 0-d input) without the ufunc machinery, whose call plus the NaN scan of errors="raise" cost
+// several times scipy.special's 0-d call. Anything else: NotImplemented (the caller takes the
+// ufunc route).
+template <class K, std::size_t... I>
+PyObject* call_fast(PyObject* const* args, std::index_sequence<I...>) {
+  constexpr std::size_t nin = sizeof...(I);
+  double x[nin];
+  bool zero_d = false;
+  for (std::size_t k = 0; k < nin; ++k) {
+    PyObject* o = args[k];
+    if (PyFloat_CheckExact(o) || PyLong_CheckExact(o) || Py_TYPE(o) == &PyDoubleArrType_Type) {
+      x[k] = PyFloat_AsDouble(o);
+      if (x[k] == -1.0 && PyErr_Occurred()) return nullptr;
+    } else if (PyArray_CheckExact(o) && PyArray_NDIM(reinterpret_cast<PyArrayObject*>(o)) == 0 &&
+               PyArray_TYPE(reinterpret_cast<PyArrayObject*>(o)) == NPY_DOUBLE &&
+               PyArray_ISBEHAVED_RO(reinterpret_cast<PyArrayObject*>(o))) {
+      x[k] = *static_cast<const double*>(PyArray_DATA(reinterpret_cast<PyArrayObject*>(o)));
+      zero_d = true;
+    } else {
+      Py_RETURN_NOTIMPLEMENTED;
+    }
+  }
+  const long errors = PyLong_AsLong(args[nin]);
+  if (errors == -1 && PyErr_Occurred()) return nullptr;
+  double r;
+  if (errors != 0) {
+    r = K::eval(x[I]..., nan_policy());
+  } else {
+    try {
+      r = K::eval(x[I]..., default_policy());
+    } catch (const std::domain_error& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+      return nullptr;
+    }
+  }
+  if (!zero_d) return PyFloat_FromDouble(r);
+  PyObject* out = PyArrayScalar_New(Double);
+  if (out) PyArrayScalar_ASSIGN(out, Double, r);
+  return out;
+}
+
+template <class K, std::size_t Nin>
+PyObject* fast_fastcall(PyObject*, PyObject* const* args, Py_ssize_t nargs) {
+  if (nargs != static_cast<Py_ssize_t>(Nin + 1)) {
+    PyErr_Format(PyExc_TypeError, "gecko._core.%s_fast takes %d arguments (%zd given)", K::name,
+                 static_cast<int>(Nin + 1), nargs);
+    return nullptr;
+  }
+  return call_fast<K>(args, std::make_index_sequence<Nin>());
+}
+
 template <class K, std::size_t Nin>
 void add_scalar(py::module_& m, const char* name) {
   static PyMethodDef def = {name, reinterpret_cast<PyCFunction>(reinterpret_cast<void (*)()>(&scalar_fastcall<K, Nin>)),
@@ -257,6 +312,15 @@ void add_scalar(py::module_& m, const char* name) {
   PyObject* f = PyCFunction_NewEx(&def, nullptr, nullptr);
   if (!f) throw py::error_already_set();
   m.attr(name) = py::reinterpret_steal<py::object>(f);
+  static const std::string fast_name = std::string(K::name) + "_fast";
+  static PyMethodDef fast = {fast_name.c_str(),
+                             reinterpret_cast<PyCFunction>(reinterpret_cast<void (*)()>(&fast_fastcall<K, Nin>)),
+                             METH_FASTCALL,
+                             "(a, ..., errors): scalars and 0-d float64 arrays through the scalar kernel, "
+                             "else NotImplemented"};
+  PyObject* g = PyCFunction_NewEx(&fast, nullptr, nullptr);
+  if (!g) throw py::error_already_set();
+  m.attr(fast_name.c_str()) = py::reinterpret_steal<py::object>(g);
 }
 
 }  // namespace

@@ -212,3 +212,24 @@ def test_vector_levels_raise_no_floating_point_warnings_the_scalar_loop_does_not
     want = flags("scalar")
     for lv in LEVELS[1:]:
         assert flags(lv) == want, lv
+
+
+def test_zero_d_and_scalar_calls_take_the_scalar_kernel_with_the_ufuncs_types():
+    # 0-d float64 arrays (alone or with Python scalars) skip the ufunc machinery but return what
+    # the ufunc returns, a numpy float64; other dtypes still go through the ufunc
+    for fn, args in ((gecko.ellint_f, (0.7, 0.4)), (gecko.ellint_e, (0.7, 0.4)), (gecko.ellint_k, (0.4,)),
+                     (gecko.carlson_rf, (1.0, 2.0, 3.0)), (gecko.carlson_rj, (1.0, 2.0, 3.0, 4.0))):
+        u = getattr(ell.ufuncs, fn.__name__)
+        want = u(*args)
+        got = fn(*(np.array(a) for a in args))
+        assert type(got) is np.float64 and got == want
+        mixed = fn(np.array(args[0]), *args[1:])
+        assert type(mixed) is np.float64 and mixed == want
+        assert type(fn(*args)) is float and fn(*args) == want
+        f32 = fn(*(np.array(a, dtype=np.float32) for a in args))
+        assert f32.dtype == np.float32 and f32 == u(*(np.float32(a) for a in args))
+    with pytest.raises(ValueError, match="m = 5"):
+        gecko.ellint_f(np.array(1.0), np.array(5.0))
+    assert np.isnan(gecko.ellint_f(np.array(1.0), np.array(5.0), errors="nan"))
+    with pytest.raises(ValueError):
+        gecko.ellint_f(np.array(1.0), 0.5, errors="bogus")
