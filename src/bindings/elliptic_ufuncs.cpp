@@ -241,16 +241,6 @@ PyObject* call_scalar(PyObject* const* args, std::index_sequence<I...>) {
   }
 }
 
-template <class K, std::size_t Nin>
-PyObject* scalar_fastcall(PyObject*, PyObject* const* args, Py_ssize_t nargs) {
-  if (nargs != static_cast<Py_ssize_t>(Nin + 1)) {
-    PyErr_Format(PyExc_TypeError, "gecko._core.%s_scalar takes %d arguments (%zd given)", K::name,
-                 static_cast<int>(Nin + 1), nargs);
-    return nullptr;
-  }
-  return call_scalar<K>(args, std::make_index_sequence<Nin>());
-}
-
 // The public functions' first stop for anything but two plain floats: Python float, int and
 // numpy float64 scalars give a Python float (as the scalar entry above); when any argument is a
 // 0-d float64 array and the others such scalars, a numpy float64 (what the ufunc returns for
@@ -295,32 +285,33 @@ PyObject* call_fast(PyObject* const* args, std::index_sequence<I...>) {
   return out;
 }
 
-template <class K, std::size_t Nin>
-PyObject* fast_fastcall(PyObject*, PyObject* const* args, Py_ssize_t nargs) {
+// METH_FASTCALL entry <name>_scalar (Fast = false) or <name>_fast (Fast = true).
+template <class K, std::size_t Nin, bool Fast>
+PyObject* fastcall(PyObject*, PyObject* const* args, Py_ssize_t nargs) {
   if (nargs != static_cast<Py_ssize_t>(Nin + 1)) {
-    PyErr_Format(PyExc_TypeError, "gecko._core.%s_fast takes %d arguments (%zd given)", K::name,
-                 static_cast<int>(Nin + 1), nargs);
+    PyErr_Format(PyExc_TypeError, "gecko._core.%s%s takes %d arguments (%zd given)", K::name,
+                 Fast ? "_fast" : "_scalar", static_cast<int>(Nin + 1), nargs);
     return nullptr;
   }
-  return call_fast<K>(args, std::make_index_sequence<Nin>());
+  if constexpr (Fast) return call_fast<K>(args, std::make_index_sequence<Nin>());
+  return call_scalar<K>(args, std::make_index_sequence<Nin>());
+}
+
+template <class K, std::size_t Nin, bool Fast>
+void add_fastcall(py::module_& m, const char* doc) {
+  static const std::string name = std::string(K::name) + (Fast ? "_fast" : "_scalar");
+  static PyMethodDef def = {name.c_str(), reinterpret_cast<PyCFunction>(reinterpret_cast<void (*)()>(&fastcall<K, Nin, Fast>)),
+                            METH_FASTCALL, doc};
+  PyObject* f = PyCFunction_NewEx(&def, nullptr, nullptr);
+  if (!f) throw py::error_already_set();
+  m.attr(name.c_str()) = py::reinterpret_steal<py::object>(f);
 }
 
 template <class K, std::size_t Nin>
-void add_scalar(py::module_& m, const char* name) {
-  static PyMethodDef def = {name, reinterpret_cast<PyCFunction>(reinterpret_cast<void (*)()>(&scalar_fastcall<K, Nin>)),
-                            METH_FASTCALL, "scalar kernel (a, ..., errors): errors 0 raises ValueError, 1 gives NaN"};
-  PyObject* f = PyCFunction_NewEx(&def, nullptr, nullptr);
-  if (!f) throw py::error_already_set();
-  m.attr(name) = py::reinterpret_steal<py::object>(f);
-  static const std::string fast_name = std::string(K::name) + "_fast";
-  static PyMethodDef fast = {fast_name.c_str(),
-                             reinterpret_cast<PyCFunction>(reinterpret_cast<void (*)()>(&fast_fastcall<K, Nin>)),
-                             METH_FASTCALL,
-                             "(a, ..., errors): scalars and 0-d float64 arrays through the scalar kernel, "
-                             "else NotImplemented"};
-  PyObject* g = PyCFunction_NewEx(&fast, nullptr, nullptr);
-  if (!g) throw py::error_already_set();
-  m.attr(fast_name.c_str()) = py::reinterpret_steal<py::object>(g);
+void add_scalar(py::module_& m, const char*) {
+  add_fastcall<K, Nin, false>(m, "scalar kernel (a, ..., errors): errors 0 raises ValueError, 1 gives NaN");
+  add_fastcall<K, Nin, true>(m, "(a, ..., errors): scalars and 0-d float64 arrays through the scalar kernel, "
+                                "else NotImplemented");
 }
 
 }  // namespace
