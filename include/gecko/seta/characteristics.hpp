@@ -8,7 +8,7 @@
 //                   minimum, each refined to dFn/ds = 0 and its slope verified (see below)
 //   (Ft)max         sqrt(2 EA2 w), and Fn where the line ends there
 //   sticky at rest  (Fn)0 < 0
-// next to the small-deformation formulas (gecko/peel/small_deformation.hpp).
+// next to the small-deformation formulas (gecko/seta/small_deformation.hpp).
 //
 // Interior minima. Every segment between two traced nodes over which dFn/ds (the Fn component of
 // the line's unit tangent, exact at the converged nodes) goes from < 0 to > 0 holds a minimum of
@@ -37,7 +37,7 @@
 #include <limits>
 #include <vector>
 
-#include "gecko/peel/small_deformation.hpp"
+#include "gecko/seta/small_deformation.hpp"
 #include "gecko/seta/critical_line.hpp"
 #include "gecko/seta/detail/dual.hpp"
 #include "gecko/seta/extensibility.hpp"
