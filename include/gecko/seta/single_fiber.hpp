@@ -94,7 +94,7 @@ struct fiber_system {
     using std::atan2; using std::sqrt;
     const S N = sqrt(Fn * Fn + Ft * Ft);
     const S cphi = Ft / N, sphi = Fn / N;
-    const S M = Ft + w;
+    const S M = Ft + w;  // the contact-edge first integral, paper 001 eq (9)
     const auto g = make_segment<E>(S(EI), S(c), M, N);
     const S u0 = sa * cphi - ca * sphi;
     const S X3s = q / seg_sqrt_f4(g, u0);
@@ -170,7 +170,7 @@ struct fiber_system {
     using std::sqrt;
     const T Delta = seta_pi<T>() / 2 - alpha;
     const T Meq = sqrt(2 * EI * w);
-    const T Q = 2 * EI * (Delta - Meq * l / EI) / (l * l);
+    const T Q = 2 * EI * (Delta - Meq * l / EI) / (l * l);  // one-segment paper 001 eq (18) at Ft = 0
     vec z;
     z << Q / sa, (Meq + Q * l) / sqrt(2 * EI);
     return z;
