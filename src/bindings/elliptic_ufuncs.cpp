@@ -226,6 +226,34 @@ py::object make_ufunc(const char* doc) {
   return py::reinterpret_steal<py::object>(u);
 }
 
+// ellint_ek(m) -> (E, K): one input, two outputs from one duplication (gecko/elliptic/ellint_ek.hpp),
+// on the pool like the other loops.
+template <class T>
+void ek_range(char** args, const npy_intp* steps, npy_intp begin, npy_intp end) {
+  for (npy_intp i = begin; i < end; ++i) {
+    const auto r = gecko::ellint_ek(*reinterpret_cast<const T*>(args[0] + i * steps[0]), nan_policy());
+    *reinterpret_cast<T*>(args[1] + i * steps[1]) = r.E;
+    *reinterpret_cast<T*>(args[2] + i * steps[2]) = r.K;
+  }
+}
+
+template <class T>
+void ek_loop(char** args, const npy_intp* dims, const npy_intp* steps, void*) {
+  const npy_intp n = dims[0];
+  const unsigned nt = threads_for(static_cast<std::size_t>(n), ufunc_threads.load(std::memory_order_relaxed));
+  try {
+    gecko::detail::parallel_for_blocks(static_cast<std::size_t>(n), nt, [&](std::size_t b, std::size_t e) {
+      ek_range<T>(args, steps, static_cast<npy_intp>(b), static_cast<npy_intp>(e));
+    });
+  } catch (...) {
+    ek_range<T>(args, steps, 0, n);  // a thread failed to start: serially, identical results
+  }
+}
+
+PyUFuncGenericFunction ek_funcs[2] = {&ek_loop<float>, &ek_loop<double>};
+void* ek_data[2] = {nullptr, nullptr};
+char ek_types[6] = {NPY_FLOAT, NPY_FLOAT, NPY_FLOAT, NPY_DOUBLE, NPY_DOUBLE, NPY_DOUBLE};
+
 template <class K, std::size_t... I>
 PyObject* call_scalar(PyObject* const* args, std::index_sequence<I...>) {
   const double x[sizeof...(I)] = {PyFloat_AsDouble(args[I])...};
@@ -323,6 +351,12 @@ void bind_elliptic_ufuncs(py::module_& m) {
   u.attr("ellint_f") = make_ufunc<kernel_f, 2>("ellint_f(phi, m): F(phi|m), NaN outside the domain");
   u.attr("ellint_e") = make_ufunc<kernel_e, 2>("ellint_e(phi, m): E(phi|m), NaN outside the domain");
   u.attr("ellint_k") = make_ufunc<kernel_k, 1>("ellint_k(m): K(m), NaN for m > 1");
+  {
+    PyObject* ek = PyUFunc_FromFuncAndData(ek_funcs, ek_data, ek_types, 2, 1, 2, PyUFunc_None, "ellint_ek",
+                                           "ellint_ek(m) -> (E(m), K(m)) from one duplication, NaN for m > 1", 0);
+    if (!ek) throw py::error_already_set();
+    u.attr("ellint_ek") = py::reinterpret_steal<py::object>(ek);
+  }
   u.attr("carlson_rf") = make_ufunc<kernel_rf, 3>("carlson_rf(x, y, z): R_F, NaN outside the domain");
   u.attr("carlson_rd") = make_ufunc<kernel_rd, 3>("carlson_rd(x, y, z): R_D, NaN outside the domain");
   u.attr("carlson_rj") = make_ufunc<kernel_rj, 4>("carlson_rj(x, y, z, p): R_J, NaN outside the domain");

@@ -233,3 +233,15 @@ def test_zero_d_and_scalar_calls_take_the_scalar_kernel_with_the_ufuncs_types():
     assert np.isnan(gecko.ellint_f(np.array(1.0), np.array(5.0), errors="nan"))
     with pytest.raises(ValueError):
         gecko.ellint_f(np.array(1.0), 0.5, errors="bogus")
+
+
+def test_ellint_ek_ufunc_gives_e_and_k_together():
+    # the same values as the complete-integral table (mpmath), and as gecko.ellint_ek; NaN for m > 1
+    (m,), (E, K), _ = _table("elliptic_complete.csv", ("m",), ("E", "K"))
+    e, k = ell.ufuncs.ellint_ek(m)
+    assert _err_eps(e, E).max() <= 4 and _err_eps(k, K).max() <= 3
+    ek = gecko.ellint_ek(m[np.isfinite(E.astype(float))])
+    assert np.array_equal(ek.E, e[np.isfinite(E.astype(float))])
+    e32, k32 = ell.ufuncs.ellint_ek(np.float32(0.5))
+    assert e32.dtype == np.float32 and abs(k32 - 1.8540747) < 1e-6
+    assert np.all(np.isnan(ell.ufuncs.ellint_ek([1.5, np.nan])))
