@@ -83,7 +83,6 @@ compliant_seta_result<T> simulate_compliant_seta(const sliding_params<T>& p, con
                                                  const compliant_seta_options<T>& opt,
                                                  const spatula_population<T>& pop = {},
                                                  const Policy& = Policy()) {
-  using std::isfinite;
   using std::sqrt;
   static const char* function = "gecko::simulate_compliant_seta";
   compliant_seta_result<T> r;
@@ -93,38 +92,19 @@ compliant_seta_result<T> simulate_compliant_seta(const sliding_params<T>& p, con
     r.collective_stiffness = r.stretch = r.t_on = nan;
     return r;
   };
-  if (!detail::check_sliding_params<T, Policy>(function, p)) return fail();
-  if (!detail::check_positive<T, Policy>(function, "V", V, "0 < V < inf (stage velocity)"))
-    return fail();
   if (!detail::check_positive<T, Policy>(function, "spring", opt.spring,
                                          "0 < spring < inf (stage-to-seta stiffness)"))
-    return fail();
-  if (!detail::check_t_off<T, Policy>(function, opt.t_off)) return fail();
-  if (!detail::check_positive<T, Policy>(function, "duration", opt.duration, "0 < duration < inf"))
     return fail();
   if (!(opt.transient >= T(0) && opt.transient < T(1))) {
     raise_domain_error<T, Policy>(function, "transient", opt.transient, "0 <= transient < 1");
     return fail();
   }
-  if (opt.spatulae < 1) {
-    raise_domain_error<T, Policy>(function, "spatulae", T(opt.spatulae), "spatulae >= 1");
+  T G;
+  if (!detail::check_run<T, Policy>(function, p, law, V, opt.t_off, opt.duration, opt.spatulae,
+                                    opt.samples, 2, G))
     return fail();
-  }
-  if (opt.samples < 2) {
-    raise_domain_error<T, Policy>(function, "samples", T(opt.samples), "samples >= 2");
-    return fail();
-  }
-  const T G = static_cast<T>(law(V));
-  if (!(G > T(0)) || !isfinite(G)) {
-    raise_domain_error<T, Policy>(function, "G", G,
-                                  "0 < G(V) < inf (a spatula must stretch before it detaches)");
-    return fail();
-  }
   const std::size_t M = opt.spatulae, S = opt.samples;
-  if (!(detail::check_population_factors<T, Policy>(function, "length", pop.length, M) &&
-        detail::check_population_factors<T, Policy>(function, "stiffness", pop.stiffness, M) &&
-        detail::check_population_factors<T, Policy>(function, "G0", pop.G0, M)))
-    return fail();
+  if (!detail::check_population<T, Policy>(function, pop, M)) return fail();
   const T w = p.N / T(M), ks = opt.spring, T_end = opt.duration;
   const bool exponential = opt.law == resticking::exponential && opt.t_off > T(0);
 
@@ -232,7 +212,7 @@ compliant_seta_result<T> simulate_compliant_seta(const sliding_params<T>& p, con
       // A slip: detach the first, then every spatula the jump takes past its dd.
       const T F_before = ks * (u0 + V * t - position(t));
       std::size_t size = 0;
-      while (!attached.empty() && attached.top().first <= position(t)) {
+      auto detach_first = [&]() {
         const std::size_t i = attached.top().second;
         attached.pop();
         const detail::seta_spatula<T>& s = sp[i];
@@ -243,19 +223,10 @@ compliant_seta_result<T> simulate_compliant_seta(const sliding_params<T>& p, con
         on[i] = 0;
         ++size;
         detached.push({t + (exponential ? T(rng.exponential(double(s.t_off))) : s.t_off), i});
-      }
-      if (size == 0) {  // rounding put x a hair short of the threshold: take the first
-        const std::size_t i = attached.top().second;
-        attached.pop();
-        const detail::seta_spatula<T>& s = sp[i];
-        F_a -= s.f1 - s.Kpp * s.x0;
-        K_a -= s.Kpp;
-        P_a -= s.f2 - s.Kqp * s.x0;
-        Q_a -= s.Kqp;
-        on[i] = 0;
-        size = 1;
-        detached.push({t + (exponential ? T(rng.exponential(double(s.t_off))) : s.t_off), i});
-      }
+      };
+      while (!attached.empty() && attached.top().first <= position(t)) detach_first();
+      // Rounding can leave x a hair short of the threshold that was due: take that one.
+      if (size == 0) detach_first();
       if (attached.empty()) F_a = K_a = P_a = Q_a = T(0);  // no rounding left when all are off
       r.detachments += size;
       ++r.slips;

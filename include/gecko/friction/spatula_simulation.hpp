@@ -131,6 +131,43 @@ bool check_population_factors(const char* function, const char* name, const std:
   return true;
 }
 
+template <class T, class Policy>
+bool check_population(const char* function, const spatula_population<T>& pop, std::size_t M) {
+  return check_population_factors<T, Policy>(function, "length", pop.length, M) &&
+         check_population_factors<T, Policy>(function, "stiffness", pop.stiffness, M) &&
+         check_population_factors<T, Policy>(function, "G0", pop.G0, M);
+}
+
+// The checks of a run of M spatulae (simulate_spatulae, simulate_compliant_seta), in order; the
+// law is called last, with a checked V, and gives G = G(V).
+template <class T, class Policy, class Law>
+bool check_run(const char* function, const sliding_params<T>& p, const Law& law, T V, T t_off,
+               T duration, std::size_t spatulae, std::size_t samples, std::size_t min_samples,
+               T& G) {
+  using std::isfinite;
+  if (!check_sliding_params<T, Policy>(function, p)) return false;
+  if (!check_positive<T, Policy>(function, "V", V, "0 < V < inf (drag velocity)")) return false;
+  if (!check_t_off<T, Policy>(function, t_off)) return false;
+  if (!check_positive<T, Policy>(function, "duration", duration, "0 < duration < inf"))
+    return false;
+  if (spatulae < 1) {
+    raise_domain_error<T, Policy>(function, "spatulae", T(spatulae), "spatulae >= 1");
+    return false;
+  }
+  if (samples < min_samples) {
+    raise_domain_error<T, Policy>(function, "samples", T(samples),
+                                  min_samples == 1 ? "samples >= 1" : "samples >= 2");
+    return false;
+  }
+  G = static_cast<T>(law(V));
+  if (!(G > T(0)) || !isfinite(G)) {
+    raise_domain_error<T, Policy>(function, "G", G,
+                                  "0 < G(V) < inf (a spatula must stretch before it detaches)");
+    return false;
+  }
+  return true;
+}
+
 template <class T>
 T factor_or_one(const std::vector<T>& v, std::size_t i) { return v.empty() ? T(1) : v[i]; }
 
@@ -158,7 +195,11 @@ T force_range(T f1, T f_end, bool has_off) {
 template <class T, class Cycle>
 void run_spatulae(std::size_t M, const Cycle& cycle, T T_end, std::size_t S, bool exponential,
                   std::uint64_t seed, std::vector<T>& sum_par, std::vector<T>& sum_perp,
-                  T& integral_par, T& integral_perp, std::size_t& detachments) {
+                  T& integral_par_out, T& integral_perp_out, std::size_t& detachments_out) {
+  // Local accumulators: through the references the compiler would have to assume that the
+  // stores to sum_par / sum_perp may change them, and keep them in memory (half as fast again).
+  T integral_par = T(0), integral_perp = T(0);
+  std::size_t detachments = 0;
   const T dt_sample = T_end / T(S);
   spatula_rng rng(seed);
   for (std::size_t i = 0; i < M; ++i) {
@@ -221,6 +262,9 @@ void run_spatulae(std::size_t M, const Cycle& cycle, T T_end, std::size_t S, boo
       }
     }
   }
+  integral_par_out += integral_par;
+  integral_perp_out += integral_perp;
+  detachments_out += detachments;
 }
 
 template <class T, class Policy, class Law>
@@ -228,7 +272,6 @@ spatula_simulation_result<T> simulate_spatulae_imp(const char* function,
                                                    const sliding_params<T>& p, const Law& law, T V,
                                                    const spatula_simulation_options<T>& opt,
                                                    const spatula_population<T>* pop) {
-  using std::isfinite;
   using std::sqrt;
   spatula_simulation_result<T> r;
   const T nan = std::numeric_limits<T>::quiet_NaN();
@@ -238,32 +281,13 @@ spatula_simulation_result<T> simulate_spatulae_imp(const char* function,
     r.bound_par = r.bound_perp = nan;
     return r;
   };
-  if (!check_sliding_params<T, Policy>(function, p)) return fail();
-  if (!check_positive<T, Policy>(function, "V", V, "0 < V < inf (drag velocity)")) return fail();
-  if (!check_t_off<T, Policy>(function, opt.t_off)) return fail();
-  if (!check_positive<T, Policy>(function, "duration", opt.duration, "0 < duration < inf"))
+  T G;
+  if (!check_run<T, Policy>(function, p, law, V, opt.t_off, opt.duration, opt.spatulae,
+                            opt.samples, 1, G))
     return fail();
-  if (opt.spatulae < 1) {
-    raise_domain_error<T, Policy>(function, "spatulae", T(opt.spatulae), "spatulae >= 1");
-    return fail();
-  }
-  if (opt.samples < 1) {
-    raise_domain_error<T, Policy>(function, "samples", T(opt.samples), "samples >= 1");
-    return fail();
-  }
-  const T G = static_cast<T>(law(V));
-  if (!(G > T(0)) || !isfinite(G)) {
-    raise_domain_error<T, Policy>(function, "G", G,
-                                  "0 < G(V) < inf (a spatula must stretch before it detaches)");
-    return fail();
-  }
   const std::size_t M = opt.spatulae, S = opt.samples;
   const bool population = pop != nullptr && !pop->empty();
-  if (population &&
-      !(check_population_factors<T, Policy>(function, "length", pop->length, M) &&
-        check_population_factors<T, Policy>(function, "stiffness", pop->stiffness, M) &&
-        check_population_factors<T, Policy>(function, "G0", pop->G0, M)))
-    return fail();
+  if (population && !check_population<T, Policy>(function, *pop, M)) return fail();
   const T t_off = opt.t_off;
   const T T_end = opt.duration;
   const bool exponential = opt.law == resticking::exponential && t_off > T(0);
