@@ -13,7 +13,8 @@
 //   E = (1-m) s R_F(c^2, Delta^2, 1) + (m(1-m)/3) s^3 R_D(c^2, 1, Delta^2) + m s c/Delta
 //                                                                  (0 < m <= 1; DLMF 19.25.10)
 // with Carlson's duplication (DLMF 19.26.18, 19.26.20) and the degree-15 (R_F) and degree-11
-// (R_D) series of gecko/elliptic/carlson_rf.hpp and carlson_rd.hpp. Lanes converge after
+// (R_D) series of gecko/elliptic/carlson_rf.hpp and carlson_rd.hpp; F's R_F in the scaled product
+// form with the degree-11 series of gecko/elliptic/ellint_f.hpp. Lanes converge after
 // different numbers of duplication steps: the loop runs while any lane is still active, and a
 // converged lane is frozen by a blend, so it ends with exactly its own step count (an extra step
 // would change its last bits and tie its result to its neighbours).
@@ -123,28 +124,50 @@ inline vd rd_series(vd X, vd Y, vd A, vd f) {
   return f * (1.0 + tail) / (A * pack::sqrt(A));
 }
 
-// R_F with the first step's roots known (carlson_rf_roots_imp): sx = sqrt(x) etc.
-inline vd rf_roots(vd x, vd y, vd z, vd sx, vd sy, vd sz) {
-  vd A = (x + y + z) * (1.0 / 3);
-  const vd dx = A - x, dy = A - y, dz = A - z;
-  const vd D = vmax(vmax(vabs(dx), vabs(dy)), vabs(dz));
-  vd f = splat(1.0);
-  vi active = D >= tol_rf * A;
-  if (pack::any(active)) {
-    vd lambda = sx * (sy + sz) + sy * sz;
-    for (int step = 1;; ++step) {
-      x = select(active, (x + lambda) * 0.25, x);
-      y = select(active, (y + lambda) * 0.25, y);
-      z = select(active, (z + lambda) * 0.25, z);
-      A = select(active, (A + lambda) * 0.25, A);
-      f = select(active, f * 0.25, f);
-      active &= f * D >= tol_rf * A;
-      if (!pack::any(active) || step >= max_steps) break;
-      const vd rx = pack::sqrt(x), ry = pack::sqrt(y), rz = pack::sqrt(z);
-      lambda = rx * (ry + rz) + ry * rz;
-    }
+// The degree-11 series of R_F minus 1 (carlson_rf_series11_tail), for the Legendre F.
+inline vd rf_series11_tail(vd X, vd Y) {
+  const vd Z = -(X + Y);
+  const vd XY = X * Y;
+  const vd E2 = XY - Z * Z;
+  const vd E3 = XY * Z;
+  const vd e2 = E2 * E2;
+  const vd e4 = e2 * e2;
+  const vd q0 = E2 * (((-1.0 / 10 + E2 * (1.0 / 24)) + e2 * (-5.0 / 208 + E2 * (35.0 / 2176))) + e4 * (-3.0 / 256));
+  const vd q1 = ((1.0 / 14 + E2 * (-3.0 / 44)) + e2 * (1.0 / 16 + E2 * (-35.0 / 608))) + e4 * (315.0 / 5888);
+  const vd q2 = (3.0 / 104 + E2 * (-15.0 / 272)) + e2 * (5.0 / 64);
+  const vd q3 = 5.0 / 304 + E2 * (-35.0 / 736);
+  return q0 + E3 * (q1 + E3 * (q2 + E3 * q3));
+}
+
+constexpr double tol_rf11 = gecko::detail::carlson_tolerance<double, 0>::rf11;
+
+// s R_F(c^2, d2, 1) by the duplication in scaled product form (legendre_rf_imp of
+// gecko/elliptic/ellint_f.hpp, same operations): d2 < 1/eps.
+inline vd legendre_rf(vd s, vd c, vd d2) {
+  const vd x = c * c;
+  const vd A0 = (x + d2 + 1.0) * (1.0 / 3);
+  const vd dx = A0 - x;
+  const vd dy = A0 - d2;
+  const vd D = vmax(vmax(vabs(dx), vabs(dy)), vabs(A0 - 1.0));
+  const vd d = pack::sqrt(d2);
+  const vd cd = c + d, c1 = c + 1.0, d1 = d + 1.0;
+  vd X = cd * c1, Y = cd * d1, Z = c1 * d1;
+  vd g = splat(2.0);
+  const vd lim = D * (3 / tol_rf11);
+  vi active = X + Y + Z <= lim;
+  for (int step = 1; step < max_steps && pack::any(active); ++step) {
+    const vd rx = pack::sqrt(X), ry = pack::sqrt(Y), rz = pack::sqrt(Z);
+    const vd xy = rx + ry, xz = rx + rz, yz = ry + rz;
+    X = select(active, xy * xz, X);
+    Y = select(active, xy * yz, Y);
+    Z = select(active, xz * yz, Z);
+    g = select(active, g * 2.0, g);
+    active &= X + Y + Z <= lim;
   }
-  return rf_finish(dx, dy, A, f);
+  const vd A = (X + Y + Z) * (1.0 / 3);
+  const vd r = 1.0 / A;
+  const vd w = (s * g) / pack::sqrt(A);
+  return w + w * rf_series11_tail(dx * r, dy * r);
 }
 
 // R_F without known roots (carlson_rf_imp).
@@ -221,7 +244,8 @@ struct kernel_f {
     first_quadrant_sincos(vabs(phi), s, c);
     const vd c2 = c * c;
     const vd d2 = c2 + (1.0 - m) * (s * s);
-    return vcopysign(s * rf_roots(c2, d2, splat(1.0), c, pack::sqrt(d2), splat(1.0)), phi);
+    ok &= d2 < 0x1p52;  // d2 >= 1/eps (m -> -inf): the scalar kernel's unscaled duplication
+    return vcopysign(legendre_rf(s, c, select(ok, d2, splat(1.0))), phi);
   }
 };
 
