@@ -1138,6 +1138,45 @@ def _sigma_array(s, n, name):
 
 
 
+def _fit_data(V, F_par, F_perp):
+    """The three data arrays, flat float64, after the checks a fit needs (same shape, no
+    broadcasting; finite forces, 0 <= V < inf), each error naming the argument and element."""
+    arrays = [_real_array(a, name) for a, name in ((V, "V"), (F_par, "F_par"), (F_perp, "F_perp"))]
+    for a, name in zip(arrays[1:], ("F_par", "F_perp")):
+        if a.shape != arrays[0].shape:
+            raise ValueError(f"gecko.fit_steady_sliding: {name} has shape {a.shape} and V has shape "
+                             f"{arrays[0].shape}: need one measured force per velocity")
+    out = [np.ascontiguousarray(a, dtype=np.float64).reshape(-1) for a in arrays]
+    for a, name, need in ((out[0], "V", "0 <= V < inf (drag velocity)"),
+                          (out[1], "F_par", "finite measured forces"),
+                          (out[2], "F_perp", "finite measured forces")):
+        bad = ~np.isfinite(a) if name != "V" else ~((a >= 0) & np.isfinite(a))
+        if np.any(bad):
+            i = int(np.flatnonzero(bad)[0])
+            raise ValueError(f"gecko.fit_steady_sliding: {name}[{i}] = {float(a[i])!r} is out of range: "
+                             f"need {need}")
+    return out
+
+
+def _check_law_at_start(G, V, values):
+    """A ParametricLaw must give one finite G per velocity at its starting values: otherwise the
+    fit could not start; say so naming the law rather than failing inside the solver."""
+    try:
+        with np.errstate(all="ignore"):
+            g = np.asarray(G(V, values), dtype=np.float64)
+    except Exception as exc:  # noqa: BLE001 - reported with the law named
+        raise ValueError(f"guess.law: calling the law at its starting parameters raised "
+                         f"{type(exc).__name__}: {exc}") from exc
+    if g.shape != V.shape:
+        raise ValueError(f"guess.law returns shape {g.shape} for {V.size} velocities: need one G "
+                         "per velocity (a numpy-vectorised function)")
+    bad = ~np.isfinite(g)
+    if np.any(bad):
+        i = int(np.flatnonzero(bad)[0])
+        raise ValueError(f"guess.law gives G = {float(g[i])!r} at V[{i}] = {float(V[i])!r} with its "
+                         "starting parameters: need a finite G at every measured velocity")
+
+
 def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC, *,
                        fit_f_par1: Optional[bool] = None, fit_f_perp1: bool = True,
                        fit_coupling: bool = False, max_iterations: int = 200,
@@ -1194,8 +1233,10 @@ def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC
     Raises
     ------
     ValueError
-        If the data are not finite, of different lengths or too few, sigma is not positive, or
-        the law cannot be fitted.
+        If the data are not finite (the message names the array and element), of different
+        shapes or too few, V < 0, sigma is not positive and finite, a flag is not a bool, or the
+        law cannot be fitted (a ParametricLaw that raises, returns the wrong shape or a
+        non-finite G at its starting values).
 
     Examples
     --------
@@ -1208,7 +1249,13 @@ def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC
     """
     from statistics import NormalDist
 
-    shape, (v, fp, fq) = _flat_args((V, F_par, F_perp))
+    v, fp, fq = _fit_data(V, F_par, F_perp)
+    for flag, name in ((fit_f_par1, "fit_f_par1"), (fit_f_perp1, "fit_f_perp1"),
+                       (fit_coupling, "fit_coupling"), (profile, "profile"),
+                       (absolute_sigma, "absolute_sigma")):
+        if not (isinstance(flag, (bool, np.bool_)) or (flag is None and name in ("fit_f_par1", "absolute_sigma"))):
+            raise ValueError(f"{name} = {flag!r} is not allowed: need True or False"
+                             + (" (or None: automatic)" if name == "fit_f_par1" else ""))
     if not isinstance(guess, SlidingModel):
         raise ValueError(f"guess = {guess!r} is not allowed: need a SlidingModel")
     law = guess.law
@@ -1235,6 +1282,7 @@ def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC
                       custom_values=[_scalar(law.params[k], f"guess.law.params[{k!r}]")
                                      for k in names],
                       custom_positive=[k in positive for k in names])
+        _check_law_at_start(G, v, custom["custom_values"])
         if fit_f_par1 is None:
             # the automatic choice of the C++ fit, decided here: a law that fails at V = 0
             # (log V, 1/V) has no finite plateau and f_par1 is fitted

@@ -125,19 +125,49 @@ TEST_CASE("fit: Eyring law with f_par1 and the coupling free", "[friction][fit]"
 TEST_CASE("fit: bad input", "[friction][fit][errors]") {
   const auto t = gecko::fig6_viscoelastic<double>();
   auto d = synthesise(t.params, t.law, 0.0, 1, 3);
-  // 6 data, 5 parameters: fine; 2 data, 5 parameters: refused.
+  // 3 speeds (6 data), 4 parameters: fine; 2 speeds (4 data): refused.
   CHECK_THROWS_WITH(gecko::fit_steady_sliding(d.V.data(), d.F_par.data(), d.F_perp.data(), 2,
                                               t.params, t.law),
                     Catch::Contains("len(V) = 2") && Catch::Contains("more data than parameters"));
   d.V[1] = -1;
   CHECK_THROWS_WITH(gecko::fit_steady_sliding(d.V.data(), d.F_par.data(), d.F_perp.data(), 3,
                                               t.params, t.law),
-                    Catch::Contains("V = -1"));
+                    Catch::Contains("V[1] = -1"));
   d.V[1] = 1e-4;
   d.F_perp[2] = std::nan("");
   CHECK_THROWS_WITH(gecko::fit_steady_sliding(d.V.data(), d.F_par.data(), d.F_perp.data(), 3,
                                               t.params, t.law),
-                    Catch::Contains("F_perp = nan"));
+                    Catch::Contains("F_perp[2] = nan"));
+  d.F_perp[2] = 0.01;
+  {
+    std::vector<double> sg = {1e-3, 1e-3, -1e-3};
+    gecko::fit_options<double> o;
+    o.sigma_perp = sg.data();
+    CHECK_THROWS_WITH(gecko::fit_steady_sliding(d.V.data(), d.F_par.data(), d.F_perp.data(), 3,
+                                                t.params, t.law, o),
+                      Catch::Contains("sigma_perp[2] = -0.001") && Catch::Contains("0 < sigma < inf"));
+    o.sigma_perp = nullptr;
+    o.max_condition = 0.5;
+    CHECK_THROWS_WITH(gecko::fit_steady_sliding(d.V.data(), d.F_par.data(), d.F_perp.data(), 3,
+                                                t.params, t.law, o),
+                      Catch::Contains("max_condition"));
+  }
+  {
+    // A law that is not finite at the start: status non_finite, and the reason says where.
+    gecko::custom_detachment<double> c;
+    c.names = {"a"};
+    c.values = {1.0};
+    c.positive = {true};
+    c.G = [](const double*, std::size_t n, const double*, double* G) {
+      for (std::size_t i = 0; i < n; ++i) G[i] = std::nan("");
+    };
+    gecko::fit_options<double> o;
+    o.fit_f_par1 = true;
+    const auto r = gecko::fit_steady_sliding(d.V.data(), d.F_par.data(), d.F_perp.data(), 3,
+                                             t.params, c, o);
+    CHECK(r.status == gecko::fit_status::non_finite);
+    CHECK_THAT(r.reason, Catch::Contains("starting point"));
+  }
   CHECK_THROWS_WITH(gecko::fit_steady_sliding(d.V.data(), d.F_par.data(), d.F_perp.data(), 3,
                                               t.params, gecko::viscoelastic_detachment<double>{-1.0, 1.0, 1.0}),
                     Catch::Contains("G0 = -1"));

@@ -43,7 +43,7 @@ def test_fit_eyring_with_coupling():
 def test_fit_bad_input():
     V, Fp, Fq = synthetic(gecko.FIG6_VISCOELASTIC, 0.0, 3, n=5)
     Fq[1] = np.nan
-    with pytest.raises(ValueError, match="F_perp = nan"):
+    with pytest.raises(ValueError, match=r"F_perp\[1\] = nan"):
         gecko.fit_steady_sliding(V, Fp, Fq)
     with pytest.raises(ValueError, match=r"len\(V\) = 2 .*more data than parameters"):
         gecko.fit_steady_sliding(V[:2], Fp[:2], Fp[:2])
@@ -183,3 +183,51 @@ def test_fit_f_par1_default_follows_the_law():
     for law, fitted in ((plateau, False), (power, True), (logv, True)):
         fit = gecko.fit_steady_sliding(V, Fp, Fq, ve.replace(law=law))
         assert ("f_par1" in fit.names) == fitted, law
+
+
+def test_fit_bad_input_names_the_argument():
+    V, Fp, Fq = data25(gecko.FIG6_PLASTIC, 5e-4, 5e-4, 1)
+    fit = gecko.fit_steady_sliding
+    with pytest.raises(ValueError, match=r"F_par has shape \(24,\) and V has shape \(25,\)"):
+        fit(V, Fp[:24], Fq)
+    with pytest.raises(ValueError, match=r"F_perp has shape \(\) and V"):
+        fit(V, Fp, 0.01)  # no broadcasting of a scalar force
+    with pytest.raises(ValueError, match=r"V\[4\] = nan .*0 <= V < inf"):
+        fit(np.where(np.arange(25) == 4, np.nan, V), Fp, Fq)
+    with pytest.raises(ValueError, match=r"V\[0\] = -1e-06"):
+        fit(-V, Fp, Fq)
+    with pytest.raises(ValueError, match=r"F_par\[7\] = inf"):
+        fit(V, np.where(np.arange(25) == 7, np.inf, Fp), Fq)
+    with pytest.raises(ValueError, match=r"sigma_par\[0\] = -0.001"):
+        fit(V, Fp, Fq, sigma=(-1e-3, 1e-3))
+    with pytest.raises(ValueError, match=r"sigma_perp\[0\] = nan"):
+        fit(V, Fp, Fq, sigma=(1e-3, np.nan))
+    with pytest.raises(ValueError, match="fit_f_par1 = 'no' is not allowed"):
+        fit(V, Fp, Fq, fit_f_par1="no")
+    with pytest.raises(ValueError, match="profile = 1 is not allowed"):
+        fit(V, Fp, Fq, profile=1)
+    with pytest.raises(ValueError, match="max_condition"):
+        fit(V, Fp, Fq, max_condition=0.5)
+    with pytest.raises(ValueError, match="max_iterations"):
+        fit(V, Fp, Fq, max_iterations=0)
+    # a ParametricLaw that cannot be evaluated at its start is named, with what went wrong
+    base = gecko.FIG6_PLASTIC
+    raising = gecko.ParametricLaw(lambda V, a: a / 0, {"a": 1.0})
+    with pytest.raises(ValueError, match="guess.law: .*raised ZeroDivisionError"):
+        fit(V, Fp, Fq, base.replace(law=raising))
+    short = gecko.ParametricLaw(lambda V, a: a * np.ones(3), {"a": 1e-14})
+    with pytest.raises(ValueError, match=r"guess.law returns shape \(3,\) for 25 velocities"):
+        fit(V, Fp, Fq, base.replace(law=short))
+    nan_below = gecko.ParametricLaw(lambda V, a: a * np.sqrt(np.log(V / 1e-5)), {"a": 1e-14})
+    with pytest.raises(ValueError, match=r"guess.law gives G = nan at V\[0\] = 1e-06"):
+        fit(V, Fp, Fq, base.replace(law=nan_below))
+
+
+def test_fit_reports_why_it_stopped():
+    V, Fp, Fq = data25(gecko.FIG6_PLASTIC, 5e-4, 5e-4, 2)
+    ok = gecko.fit_steady_sliding(V, Fp, Fq, gecko.FIG6_PLASTIC)
+    assert ok.status == "converged" and ok.reason.split(":")[0] in ("gradient", "ftol", "xtol")
+    far = gecko.FIG6_PLASTIC.replace(law=gecko.EyringDetachment(1e-10, 1.0))
+    short = gecko.fit_steady_sliding(V, Fp, Fq, far, max_iterations=1)
+    assert short.status == "max_iterations" and "max_iterations" in short.reason
+    assert short.status_code == gecko.FitStatus.max_iterations

@@ -345,7 +345,7 @@ lm_result<T> levenberg_marquardt(const Problem& prob, Eigen::Matrix<T, Eigen::Dy
     res.theta = theta;
     res.chi2 = std::numeric_limits<T>::infinity();
     res.status = fit_status::non_finite;
-    res.reason = "the model or chi^2 is not finite at the starting point";
+    res.reason = "the model or chi^2 is not finite (overflow or NaN) at the starting point";
     return res;
   }
   free_cols();
@@ -546,22 +546,27 @@ steady_sliding_fit<T, Law> fit_steady_sliding(const T* V, const T* F_par, const 
                                   "max_condition > 1 and 0 < profile_delta < inf");
     return res;
   }
+  // Each message names the array and the element: "F_par[3] = nan is out of range".
+  auto element = [](const char* name, std::size_t i) { return std::string(name) + "[" + std::to_string(i) + "]"; };
   for (std::size_t i = 0; i < n; ++i) {
-    if (!detail::check_velocity<T, Policy>(function, V[i])) return res;
+    if (!(V[i] >= T(0) && isfinite(V[i]))) {
+      raise_domain_error<T, Policy>(function, element("V", i).c_str(), V[i], "0 <= V < inf (drag velocity)");
+      return res;
+    }
     if (!isfinite(F_par[i])) {
-      raise_domain_error<T, Policy>(function, "F_par", F_par[i], "finite measured forces");
+      raise_domain_error<T, Policy>(function, element("F_par", i).c_str(), F_par[i], "finite measured forces");
       return res;
     }
     if (!isfinite(F_perp[i])) {
-      raise_domain_error<T, Policy>(function, "F_perp", F_perp[i], "finite measured forces");
+      raise_domain_error<T, Policy>(function, element("F_perp", i).c_str(), F_perp[i], "finite measured forces");
       return res;
     }
     if (opt.sigma_par && !(opt.sigma_par[i] > T(0) && isfinite(opt.sigma_par[i]))) {
-      raise_domain_error<T, Policy>(function, "sigma_par", opt.sigma_par[i], "0 < sigma < inf");
+      raise_domain_error<T, Policy>(function, element("sigma_par", i).c_str(), opt.sigma_par[i], "0 < sigma < inf");
       return res;
     }
     if (opt.sigma_perp && !(opt.sigma_perp[i] > T(0) && isfinite(opt.sigma_perp[i]))) {
-      raise_domain_error<T, Policy>(function, "sigma_perp", opt.sigma_perp[i], "0 < sigma < inf");
+      raise_domain_error<T, Policy>(function, element("sigma_perp", i).c_str(), opt.sigma_perp[i], "0 < sigma < inf");
       return res;
     }
   }
@@ -672,7 +677,9 @@ steady_sliding_fit<T, Law> fit_steady_sliding(const T* V, const T* F_par, const 
   for (int j = 0; j < p; ++j)  // a positive parameter that underflows to 0 is not finite either
     values_finite = values_finite && isfinite(vals[std::size_t(j)]) &&
                     !(j < k && pos[std::size_t(j)] && !(vals[std::size_t(j)] > T(0)));
-  if (!finite || !isfinite(rss) || !isfinite(res.chi2) || !values_finite) {
+  if (lm.status == fit_status::non_finite) {
+    // keep the solver's reason (e.g. not finite at the starting point)
+  } else if (!finite || !isfinite(rss) || !isfinite(res.chi2) || !values_finite) {
     res.status = fit_status::non_finite;
     res.reason = "the fitted values, chi^2 or rss overflow or are not finite in this precision";
   }
