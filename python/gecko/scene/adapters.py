@@ -446,13 +446,12 @@ class SteadySlidingAdapter(Adapter):
         return [Step(st.name, "forces", [p.index for p in st.points], "eqs 5-10 with the detachment law in C++")]
 
     def k_forces(self, ex, st, step: Step) -> None:
-        from ..friction import EyringDetachment, SlidingModel, ViscoelasticDetachment, steady_sliding
+        from ..friction import steady_sliding
+        from .sliding_fit import sliding_model  # the law by name or as an expression
         for i in step.points:
             p = st.points[i]
             v = p.values
-            law = (ViscoelasticDetachment(v["G0"], v["V_star"], v["n"]) if v["law"] == "viscoelastic"
-                   else EyringDetachment(v["G0"], v["V_star"]))
-            model = SlidingModel(N=v["N"], K=v["K"], f_par1=v["f_par1"], f_perp1=v["f_perp1"], law=law)
+            model = sliding_model(v)
             V = _grid(st, p, "forces", ex.scene.resolution)
             r = steady_sliding(V, model, t_off=v["t_off"])
             ex.data[st.name][i]["forces"] = {"V": V, "F_par": np.atleast_1d(r.F_par),
@@ -460,9 +459,26 @@ class SteadySlidingAdapter(Adapter):
             ex.progress.advance(1, st.name)
 
 
+class SlidingFitAdapter(Adapter):
+    """Measured forces fitted by eqs 9-10 (the work is in gecko.scene.sliding_fit)."""
+    models = ("sliding_fit",)
+
+    def plan(self, st) -> List[Step]:
+        if "fit" not in st.outputs:
+            return []
+        return [Step(st.name, "fit", [p.index for p in st.points], "Levenberg-Marquardt fit of eqs 9-10 (C++)")]
+
+    def k_fit(self, ex, st, step: Step) -> None:
+        from .sliding_fit import run_fit
+        for i in step.points:
+            ex.data[st.name][i]["fit"] = run_fit(st.points[i].values, st.outputs["fit"].options)
+            ex.progress.advance(1, st.name)
+
+
 #: model name -> its adapter (every model of gecko.scene.models.MODELS has one)
 ADAPTERS: Dict[str, Adapter] = {name: a for a in (TwoLevelSetaAdapter(), SingleFiberAdapter(), KendallAdapter(),
-                                                  RivlinAdapter(), ForceTraceAdapter(), SteadySlidingAdapter())
+                                                  RivlinAdapter(), ForceTraceAdapter(), SteadySlidingAdapter(),
+                                                  SlidingFitAdapter())
                                 for name in a.models}
 
 

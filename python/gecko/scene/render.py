@@ -31,10 +31,12 @@ def render_plot(scene, plot, curves, folder: Path, formats: Sequence[str]) -> Li
     from .. import plot as gp
     opts = plot.options
     kind = plot.kind
-    size = opts.get("size", (10.0, 4.2) if kind == "steady_sliding" else (6.4, 4.8))
+    size = opts.get("size", {"steady_sliding": (10.0, 4.2), "sliding_fit": (13.0, 4.2)}.get(kind, (6.4, 4.8)))
     fig = _figure(size)
     if kind == "steady_sliding":
         axes = fig.subplots(1, 2)
+    elif kind == "sliding_fit":
+        axes = list(fig.subplots(1, 3))
     else:
         axes = [fig.add_subplot(1, 1, 1)]
     ax = axes[0]
@@ -88,6 +90,8 @@ def render_plot(scene, plot, curves, folder: Path, formats: Sequence[str]) -> Li
                                 colorbar=None if many else fig)
         ax.set_xlabel(gp.FN_LABEL)
         ax.set_ylabel(gp.FT_LABEL)
+    elif kind == "sliding_fit":
+        gp.sliding_fit(axes, curves, xscale=opts.get("xscale", "log"))
     elif kind == "steady_sliding":
         labels = {}
         for c in curves:
@@ -101,12 +105,12 @@ def render_plot(scene, plot, curves, folder: Path, formats: Sequence[str]) -> Li
             a.grid(True, which="both", linewidth=0.4, alpha=0.5)
             a.axhline(0.0, color="0.6", linewidth=0.8, zorder=0)
     for a in axes:
-        if kind not in ("critical_line", "steady_sliding"):
+        if kind not in ("critical_line", "steady_sliding", "sliding_fit"):
             if "xlim" in opts:
                 a.set_xlim(*opts["xlim"])
             if "ylim" in opts:
                 a.set_ylim(*opts["ylim"])
-        if "xscale" in opts and kind != "steady_sliding":
+        if "xscale" in opts and kind not in ("steady_sliding", "sliding_fit"):
             a.set_xscale(opts["xscale"])
         if "yscale" in opts:
             a.set_yscale(opts["yscale"])
