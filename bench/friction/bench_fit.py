@@ -10,25 +10,17 @@ callable, derivatives by differences). The data are the presets plus determinist
     python3 bench/friction/bench_fit.py [--out bench/results] [--reps 21]
 """
 import argparse
-import os
 import pathlib
-import statistics
-import time
+import sys
 
 import numpy as np
 
 import gecko
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1]))  # bench/, for the shared timing helper
+from _timing import machine_note, time_call, write_results  # noqa: E402
+
 TARGET_S = 0.050
-
-
-def median_time(f, reps):
-    t = []
-    for _ in range(reps):
-        t0 = time.perf_counter()
-        f()
-        t.append(time.perf_counter() - t0)
-    return statistics.median(t), min(t)
 
 
 def main():
@@ -53,24 +45,20 @@ def main():
         def fit():
             return gecko.fit_steady_sliding(V, Fp, Fq, model, sigma=(sigma, sigma), profile=True)
 
-        f = fit()
-        med, best = median_time(fit, a.reps)
-        rows.append((name, len(f.names), f.status, f.iterations, med, best))
+        t = time_call(fit, repeats=a.reps, warmup=1)
+        f = t.result
+        rows.append((name, len(f.names), f.status, f.iterations, t.median, t.best))
     out = pathlib.Path(a.out)
-    out.mkdir(parents=True, exist_ok=True)
-    with (out / "friction_fit.csv").open("w") as fh:
-        fh.write("case,parameters,status,iterations,median_seconds,min_seconds\n")
-        for r in rows:
-            fh.write(f"{r[0]},{r[1]},{r[2]},{r[3]},{r[4]:.6g},{r[5]:.6g}\n")
-    with (out / "friction_fit.md").open("w") as fh:
-        fh.write("fit_steady_sliding from Python: 25 speeds, sigma = 0.5 mN known, profile intervals "
-                 f"for every parameter, default options (wall time, median and minimum of {a.reps}; "
-                 f"{os.cpu_count()} CPUs, load average {os.getloadavg()[0]:.1f}). "
-                 f"Target: <= {TARGET_S * 1e3:.0f} ms.\n\n")
-        fh.write("| case | parameters | status | iterations | median | minimum |\n|---|---|---|---|---|---|\n")
-        for r in rows:
-            fh.write(f"| {r[0]} | {r[1]} | {r[2]} | {r[3]} | {r[4] * 1e3:.3g} ms | {r[5] * 1e3:.3g} ms |\n")
-    print(f"{os.cpu_count()} CPUs, load average {os.getloadavg()[0]:.1f}")
+    write_results(out / "friction_fit.csv", "case,parameters,status,iterations,median_seconds,min_seconds\n"
+                  + "".join(f"{r[0]},{r[1]},{r[2]},{r[3]},{r[4]:.6g},{r[5]:.6g}\n" for r in rows))
+    write_results(out / "friction_fit.md",
+                  "fit_steady_sliding from Python: 25 speeds, sigma = 0.5 mN known, profile intervals "
+                  f"for every parameter, default options (wall time, median and best of {a.reps}; "
+                  f"{machine_note()}). Target: <= {TARGET_S * 1e3:.0f} ms.\n\n"
+                  "| case | parameters | status | iterations | median | best |\n|---|---|---|---|---|---|\n"
+                  + "".join(f"| {r[0]} | {r[1]} | {r[2]} | {r[3]} | {r[4] * 1e3:.3g} ms | {r[5] * 1e3:.3g} ms |\n"
+                            for r in rows))
+    print(machine_note())
     for r in rows:
         verdict = "within" if r[4] <= TARGET_S else "OVER"
         print(f"25-point fit with profile intervals, {r[0]:38s} {r[1]} parameters, {r[2]:16s} "

@@ -1033,6 +1033,12 @@ class ParametricLaw:
         The parameters by name, with their values (the starting values of a fit).
     positive : tuple of str, optional
         Parameters that must stay positive (fitted as logarithms); default: all of them.
+    bounds : dict, optional
+        ``{name: (lower, upper)}`` (either may be None or +-inf): a fit keeps the parameter
+        strictly inside, fitting ``log((p - lo)/(hi - p))`` (both finite), ``log(p - lo)`` or
+        ``log(hi - p)``; a bounded parameter is not also taken as positive. Its standard error is
+        mapped by the derivative of that transform; where the fit ends at a bound it is NaN and
+        the fit's ``reason`` says so.
 
     Examples
     --------
@@ -1048,6 +1054,7 @@ class ParametricLaw:
     func: Callable
     params: dict
     positive: Optional[tuple] = None
+    bounds: Optional[dict] = None
 
     def __call__(self, V):
         return self.func(V, **self.params)
@@ -1156,6 +1163,95 @@ def _fit_data(V, F_par, F_perp):
             raise ValueError(f"gecko.fit_steady_sliding: {name}[{i}] = {float(a[i])!r} is out of range: "
                              f"need {need}")
     return out
+
+
+class _Bounds:
+    """Bounds of a ParametricLaw's parameters and the transforms that keep a fit inside them:
+    p = lo + (hi - lo)/(1 + exp(-t)) (both finite), lo + exp(t), hi - exp(t)."""
+
+    def __init__(self, bounds, names, start):
+        self.names, self.box = list(names), {}
+        if bounds is None:
+            self.bounded = ()
+            return
+        if not isinstance(bounds, dict):
+            raise ValueError(f"guess.law.bounds = {bounds!r} is not allowed: need a dict {{name: (lower, upper)}}")
+        for k, b in bounds.items():
+            if k not in self.names:
+                raise ValueError(f"guess.law.bounds names an unknown parameter {k!r}; parameters: "
+                                 + ", ".join(self.names))
+            if not (isinstance(b, (tuple, list)) and len(b) == 2):
+                raise ValueError(f"guess.law.bounds[{k!r}] = {b!r} is not allowed: need (lower, upper)")
+            lo = -math.inf if b[0] is None else _scalar(b[0], f"guess.law.bounds[{k!r}][0]")
+            hi = math.inf if b[1] is None else _scalar(b[1], f"guess.law.bounds[{k!r}][1]")
+            if math.isnan(lo) or math.isnan(hi) or not lo < hi or lo == math.inf or hi == -math.inf:
+                raise ValueError(f"guess.law.bounds[{k!r}] = ({lo!r}, {hi!r}) is out of range: need "
+                                 "lower < upper (either may be infinite)")
+            p0 = start[self.names.index(k)]
+            if not lo < p0 < hi:
+                raise ValueError(f"guess.law.params[{k!r}] = {p0!r} is out of range: need a start strictly "
+                                 f"inside its bounds ({lo!r}, {hi!r})")
+            if math.isfinite(lo) or math.isfinite(hi):
+                self.box[k] = (lo, hi)
+        self.bounded = tuple(self.box)
+
+    def _forward(self, k, t):
+        lo, hi = self.box[k]
+        if math.isfinite(lo) and math.isfinite(hi):
+            return lo + (hi - lo) / (1.0 + math.exp(-t)) if t > -700 else lo
+        return lo + math.exp(t) if math.isfinite(lo) else hi - math.exp(t)
+
+    def _slope(self, k, p):
+        lo, hi = self.box[k]
+        if math.isfinite(lo) and math.isfinite(hi):
+            return (p - lo) * (hi - p) / (hi - lo)
+        return p - lo if math.isfinite(lo) else -(hi - p)
+
+    def coordinates(self, start):
+        out = []
+        for k, p in zip(self.names, start):
+            if k not in self.box:
+                out.append(p)
+                continue
+            lo, hi = self.box[k]
+            out.append(math.log((p - lo) / (hi - p)) if math.isfinite(lo) and math.isfinite(hi)
+                       else math.log(p - lo) if math.isfinite(lo) else math.log(hi - p))
+        return out
+
+    def values(self, t):
+        return [self._forward(k, float(x)) if k in self.box else float(x) for k, x in zip(self.names, t)]
+
+    def map_result(self, r):
+        """The C++ result in the transformed coordinates -> the parameters (delta method)."""
+        vals = list(r["values"])
+        d = np.ones(len(vals))
+        at_bound = []
+        for j, name in enumerate(r["names"]):
+            if name not in self.box:
+                continue
+            t = vals[j]
+            p = self._forward(name, t)
+            d[j] = self._slope(name, p)
+            vals[j] = p
+            lo, hi = self.box[name]
+            for side in ("profile_lower", "profile_upper"):
+                tb = r[side][j]
+                r[side][j] = (tb if math.isnan(tb) else lo if tb == -math.inf and d[j] > 0
+                              else hi if tb == -math.inf else hi if tb == math.inf and d[j] > 0
+                              else lo if tb == math.inf else self._forward(name, tb))
+            if r["profile_lower"][j] > r["profile_upper"][j]:
+                r["profile_lower"][j], r["profile_upper"][j] = r["profile_upper"][j], r["profile_lower"][j]
+            span = (hi - lo) if math.isfinite(hi - lo) else max(abs(p), 1.0)
+            if abs(d[j]) <= 1e-9 * span:  # the transform is flat: the fit sits on the bound
+                at_bound.append(name)
+        cov = np.asarray(r["covariance"]) * np.outer(d, d)
+        se = np.abs(np.asarray(r["standard_errors"]) * d)
+        for name in at_bound:
+            se[r["names"].index(name)] = float("nan")
+        r["values"], r["covariance"], r["standard_errors"] = vals, cov, list(se)
+        if at_bound:
+            r["reason"] = (r["reason"] + "; " + ", ".join(at_bound) + " ended at a bound: its standard "
+                           "error is not defined (NaN)")
 
 
 def _check_law_at_start(G, V, values):
@@ -1274,21 +1370,27 @@ def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC
         if unknown:
             raise ValueError(f"guess.law.positive names unknown parameters {sorted(unknown)}")
         func = law.func
+        start = [_scalar(law.params[k], f"guess.law.params[{k!r}]") for k in names]
+        box = _Bounds(law.bounds, names, start)
+        positive = tuple(k for k in positive if k not in box.bounded)
 
         def G(Vv, pv, _names=names, _func=func):
             return np.asarray(_func(Vv, **dict(zip(_names, map(float, pv)))), dtype=np.float64)
 
-        custom = dict(custom_G=G, custom_names=names,
-                      custom_values=[_scalar(law.params[k], f"guess.law.params[{k!r}]")
-                                     for k in names],
+        _check_law_at_start(G, v, start)
+
+        def Gt(Vv, tv, _G=G):  # the solver's coordinates: bounded parameters transformed
+            return _G(Vv, box.values(tv))
+
+        custom = dict(custom_G=Gt if box.bounded else G, custom_names=names,
+                      custom_values=box.coordinates(start),
                       custom_positive=[k in positive for k in names])
-        _check_law_at_start(G, v, custom["custom_values"])
         if fit_f_par1 is None:
             # the automatic choice of the C++ fit, decided here: a law that fails at V = 0
             # (log V, 1/V) has no finite plateau and f_par1 is fitted
             try:
                 with np.errstate(all="ignore"):
-                    g0 = float(np.asarray(G(np.zeros(1), custom["custom_values"]),
+                    g0 = float(np.asarray(G(np.zeros(1), start),
                                           dtype=np.float64).reshape(-1)[0])
             except Exception:  # noqa: BLE001 - any failure means "no finite G(0)"
                 g0 = float("nan")
@@ -1317,6 +1419,8 @@ def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC
                                  max_iterations, sp, sq, known,
                                  bool(profile), float(delta),
                                  float(max_condition), **custom)
+    if kind == 2 and box.bounded:
+        box.map_result(r)
     values = dict(zip(r["names"], r["values"]))
     if kind == 0:
         new_law = ViscoelasticDetachment(values["G0"], values["V_star"], values["n"])

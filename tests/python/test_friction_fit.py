@@ -231,3 +231,40 @@ def test_fit_reports_why_it_stopped():
     short = gecko.fit_steady_sliding(V, Fp, Fq, far, max_iterations=1)
     assert short.status == "max_iterations" and "max_iterations" in short.reason
     assert short.status_code == gecko.FitStatus.max_iterations
+
+
+def test_fit_parametric_law_bounds():
+    truth = gecko.FIG6_VISCOELASTIC
+    V, Fp, Fq = data25(truth, 5e-4, 5e-4, 5)
+    f = lambda V, G0, V0, n: G0 * (1 + (V / V0) ** n)  # noqa: E731
+    start = {"G0": 2e-14, "V0": 2e-4, "n": 0.6}
+    kw = dict(sigma=(5e-4, 5e-4), profile=True)
+    free = gecko.fit_steady_sliding(V, Fp, Fq, truth.replace(law=gecko.ParametricLaw(f, start)), **kw)
+    law = gecko.ParametricLaw(f, start, bounds={"n": (0.0, 2.0), "V0": (1e-6, None)})
+    box = gecko.fit_steady_sliding(V, Fp, Fq, truth.replace(law=law), **kw)
+    # bounds far from the optimum: the same estimate, errors and profile intervals
+    assert free.status == box.status == "converged"
+    np.testing.assert_allclose(box.values, free.values, rtol=1e-6)
+    np.testing.assert_allclose(box.standard_errors, free.standard_errors, rtol=1e-3)
+    np.testing.assert_allclose(box.profile_lower, free.profile_lower, rtol=1e-3)
+    np.testing.assert_allclose(box.profile_upper, free.profile_upper, rtol=1e-3)
+    assert box.model.law.bounds == law.bounds
+    # a bound that binds: the fit stays inside and says the error is not defined there
+    tight = gecko.ParametricLaw(f, {**start, "n": 0.3}, bounds={"n": (0.1, 0.35)})
+    pinned = gecko.fit_steady_sliding(V, Fp, Fq, truth.replace(law=tight), sigma=(5e-4, 5e-4))
+    assert 0.1 < pinned.values[2] <= 0.35
+    if pinned.values[2] > 0.35 - 1e-6:
+        assert np.isnan(pinned.standard_errors[2]) and "ended at a bound" in pinned.reason
+
+
+@pytest.mark.parametrize("bounds,match", [
+    ({"m": (0, 1)}, "unknown parameter 'm'"), ({"n": (1, 0)}, "need lower < upper"),
+    ({"n": (0.7, 2)}, r"params\['n'\] = 0.6 is out of range: need a start strictly inside"),
+    ({"n": 3}, r"bounds\['n'\] = 3 is not allowed"), ({"n": (np.nan, 1)}, "need lower < upper"),
+    ([("n", 0, 1)], "need a dict")])
+def test_fit_bad_bounds(bounds, match):
+    V, Fp, Fq = data25(gecko.FIG6_VISCOELASTIC, 5e-4, 5e-4, 5)
+    law = gecko.ParametricLaw(lambda V, G0, V0, n: G0 * (1 + (V / V0) ** n),
+                              {"G0": 2e-14, "V0": 2e-4, "n": 0.6}, bounds=bounds)
+    with pytest.raises(ValueError, match=match):
+        gecko.fit_steady_sliding(V, Fp, Fq, gecko.FIG6_VISCOELASTIC.replace(law=law))

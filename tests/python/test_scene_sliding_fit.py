@@ -108,6 +108,12 @@ def test_the_example_recovers_the_truth():
     ({"G": "G0 * V", "parameters": {"G0": {"value": 1.0}}}, "law.parameters.G0.value", "unknown key"),
     ({"G": "G0 * log(V - 1)", "parameters": {"G0": 1.0}}, "law.G", "not finite at its start values"),
     ({"G": "G0 * V", "bounds": 1, "parameters": {"G0": 1.0}}, "law.bounds", "unknown key"),
+    ({"G": "G0 * V", "parameters": {"G0": {"start": 1.0, "bounds": [2, 1]}}}, "law.parameters.G0.bounds",
+     "need lower < upper"),
+    ({"G": "G0 * V", "parameters": {"G0": {"start": 1.0, "bounds": [0]}}}, "law.parameters.G0.bounds",
+     r"need \[lower, upper\]"),
+    ({"G": "G0 * V", "parameters": {"G0": {"start": 3.0, "bounds": [0, 2]}}}, "law.parameters.G0.start",
+     "strictly inside the bounds"),
 ])
 def test_bad_law_names_the_field(tmp_path, law, key, match):
     path, *_ = synthetic(tmp_path)
@@ -164,3 +170,17 @@ def test_array_expressions_are_safe_and_vectorised():
     # the scalar expressions keep their functions (asinh is for arrays only)
     with pytest.raises(SceneError, match="not allowed"):
         expr.names_in("asinh(1)", "k")
+
+
+def test_bounded_expression_law_in_a_fit(tmp_path):
+    path, V, Fp, Fq = synthetic(tmp_path)
+    law = {"G": "G0 * (1 + (V/V0)**n)",
+           "parameters": {"G0": 3e-14, "V0": {"start": 1e-4, "bounds": [1e-6, 1e-2]},
+                          "n": {"start": 0.45, "bounds": [0, 2]}}}
+    r = run_scene(scene(path, law), progress=False)
+    f = r.data["s"][0]["fit"]["result"]
+    free = run_scene(scene(path, LAW), progress=False).data["s"][0]["fit"]["result"]
+    assert f.status == free.status == "converged"
+    np.testing.assert_allclose(f.values, free.values, rtol=1e-6)
+    np.testing.assert_allclose(f.standard_errors, free.standard_errors, rtol=1e-3)
+    assert f.model.law.bounds == {"V0": (1e-6, 1e-2), "n": (0.0, 2.0)}

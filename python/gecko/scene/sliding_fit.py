@@ -5,7 +5,7 @@ fitted by eqs 9-10 of paper 000 with :func:`gecko.fit_steady_sliding`).
 A law in a scene::
 
     law = "viscoelastic"                   # or "eyring": the built-in laws (eqs 7, 8)
-    law = { G = "G0 * (1 + (V/V0)**n)", parameters = { G0 = 3e-14, V0 = 1e-4, n = { start = 0.45, positive = true } } }
+    law = { G = "G0 * (1 + (V/V0)**n)", parameters = { G0 = 3e-14, V0 = 1e-4, n = { start = 0.45, bounds = [0, 2] } } }
 
 The expression is read by :mod:`gecko.scene.expr` (numbers, names, + - * / ** and a whitelist of
 numpy functions; nothing else runs); ``V`` is the velocity, every other name is a parameter with
@@ -64,6 +64,7 @@ class LawExpression:
     start: Tuple[float, ...]
     positive: Tuple[bool, ...]
     key: str = ""
+    bounds: Tuple = ()  # (name, lower, upper) of the bounded parameters
 
     def __call__(self, V, **params):
         env = {"V": np.asarray(V, dtype=np.float64)}
@@ -74,7 +75,8 @@ class LawExpression:
         """The law as a :class:`gecko.ParametricLaw` (start values unless ``values``)."""
         from ..friction import ParametricLaw
         params = dict(zip(self.names, self.start)) if values is None else dict(values)
-        return ParametricLaw(self, params, tuple(n for n, p in zip(self.names, self.positive) if p))
+        return ParametricLaw(self, params, tuple(n for n, p in zip(self.names, self.positive) if p),
+                             {n: (lo, hi) for n, lo, hi in self.bounds} or None)
 
     def __repr__(self) -> str:  # shown in labels and tables
         return f"G(V) = {self.G}"
@@ -105,7 +107,7 @@ def parse_law(v, key: str):
     if unknown:
         raise SceneError(f"the law uses {', '.join(map(repr, unknown))} without a value; give each name "
                          "in G a value in parameters", key=f"{key}.parameters")
-    out_names, start, positive = [], [], []
+    out_names, start, positive, bounds = [], [], [], []
     for n, pv in params.items():
         k = f"{key}.parameters.{n}"
         if n == "V" or not n.isidentifier() or n in expr.CONSTANTS or n in expr.ARRAY_FUNCTIONS:
@@ -114,8 +116,10 @@ def parse_law(v, key: str):
         if n not in names:
             raise SceneError(f"parameter {n!r} does not appear in G = {text!r}", key=k)
         pos = None
+        box = None
         if isinstance(pv, dict):
-            _only(pv, ["start", "positive"], k)
+            _only(pv, ["start", "positive", "bounds"], k)
+            box = pv.get("bounds")
             pos = pv.get("positive")
             if pos is not None and not isinstance(pos, bool):
                 raise SceneError(f"need true or false; got {_kind(pos)}", key=f"{k}.positive")
@@ -124,6 +128,21 @@ def parse_law(v, key: str):
             pv, k = pv["start"], f"{k}.start"
         if isinstance(pv, bool) or not isinstance(pv, (int, float)) or not math.isfinite(pv):
             raise SceneError(f"need a finite number; got {pv!r}", key=k)
+        if box is not None:
+            bk = f"{key}.parameters.{n}.bounds"
+            ok = isinstance(box, list) and len(box) == 2 and all(
+                isinstance(b, (int, float)) and not isinstance(b, bool) and not math.isnan(b) for b in box)
+            if not ok:
+                raise SceneError("need [lower, upper], two numbers (inf or -inf for no bound on a side)", key=bk)
+            lo, hi = float(box[0]), float(box[1])
+            if not lo < hi or lo == math.inf or hi == -math.inf:
+                raise SceneError(f"[{lo!r}, {hi!r}] is out of range: need lower < upper", key=bk)
+            if not lo < pv < hi:
+                raise SceneError(f"start {pv!r} is out of range: need it strictly inside the bounds "
+                                 f"[{lo!r}, {hi!r}]", key=k)
+            if math.isfinite(lo) or math.isfinite(hi):
+                bounds.append((n, lo, hi))
+                pos = False if pos is None else pos  # a bounded parameter is fitted through its bounds
         pos = (pv > 0) if pos is None else pos
         if pos and not pv > 0:
             raise SceneError(f"{pv!r} is out of range: a positive parameter (fitted as a logarithm) needs "
@@ -131,7 +150,7 @@ def parse_law(v, key: str):
         out_names.append(n)
         start.append(float(pv))
         positive.append(bool(pos))
-    law = LawExpression(text, tuple(out_names), tuple(start), tuple(positive), key)
+    law = LawExpression(text, tuple(out_names), tuple(start), tuple(positive), key, tuple(bounds))
     g = law(np.array([0.0, 1e-6, 1e-4, 1e-2]), **dict(zip(law.names, law.start)))
     if not np.all(np.isfinite(g[1:])):
         raise SceneError(f"the law {text!r} is not finite at its start values (G = {g.tolist()} at "
