@@ -64,7 +64,14 @@ def steady_sliding_energy(V: _F64, G: _F64, N: float, K: _F64, f_par1: float, f_
                           ) -> tuple[_F64, _F64, Optional[_F64], Optional[_F64]]: ...
 def simulate_spatulae(N: float, K: _F64, f_par1: float, f_perp1: float, V: float, G: float,
                       spatulae: int, duration: float, t_off: float, exponential: bool,
-                      samples: int, seed: int) -> dict[str, Any]: ...
+                      samples: int, seed: int, length: Optional[_F64] = None,
+                      stiffness: Optional[_F64] = None,
+                      G0: Optional[_F64] = None) -> dict[str, Any]: ...
+def simulate_compliant_seta(N: float, K: _F64, f_par1: float, f_perp1: float, V: float, G: float,
+                            spring: float, spatulae: int, duration: float, t_off: float,
+                            exponential: bool, transient: float, samples: int, seed: int,
+                            length: Optional[_F64] = None, stiffness: Optional[_F64] = None,
+                            G0: Optional[_F64] = None) -> dict[str, Any]: ...
 def fit_steady_sliding(V: _F64, F_par: _F64, F_perp: _F64, N: float, K: _F64, f_par1: float,
                        f_perp1: float, kind: int, G0: float, V_star: float, n: float,
                        fit_f_par1: Optional[bool] = None, fit_f_perp1: bool = True,

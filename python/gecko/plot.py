@@ -740,3 +740,7 @@ def sliding_fit(axes, curves, *, xscale: str = "log", velocity_unit: float = 1e-
         ax.grid(True, which="both", linewidth=0.4, alpha=0.5)
     axes[2].axhline(0.0, color="0.4", linewidth=0.8, zorder=0)
     return arts
+# ---- the hierarchy of paper 000's Discussion (gecko.plot_hierarchy) -----------------------------
+from .plot_hierarchy import compliant_seta_trace, population_forces, stick_slip_map  # noqa: E402
+
+__all__ += ["population_forces", "compliant_seta_trace", "stick_slip_map"]

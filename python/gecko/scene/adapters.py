@@ -97,6 +97,14 @@ class Adapter:
     def run(self, ex, st, step: Step) -> None:
         getattr(self, "k_" + step.kernel)(ex, st, step)
 
+    def plot_curves(self, plot, st, rows, many: bool, Curve) -> list:
+        """The curves of a plot kind this adapter draws itself (``Curve``: the runner's class)."""
+        return []
+
+    def study_csv(self, st, rows) -> Dict[str, str]:
+        """Tables of the outputs this adapter writes itself (``csv = true``): file name -> text."""
+        return {}
+
     def k_fn0_from_line(self, ex, st, step: Step) -> None:
         for i in step.points:
             _set_fn0(ex, st, i, float(ex.data[st.name][i]["critical_line"]["Fn"][0]))
@@ -437,6 +445,13 @@ class ForceTraceAdapter(Adapter):
             ex.progress.advance(1, st.name)
 
 
+def sliding_model(v):
+    """The gecko.SlidingModel of a design with the steady_sliding model's parameters (the law by
+    name or as an expression: gecko.scene.sliding_fit)."""
+    from .sliding_fit import sliding_model as model
+    return model(v)
+
+
 class SteadySlidingAdapter(Adapter):
     models = ("steady_sliding",)
 
@@ -447,7 +462,6 @@ class SteadySlidingAdapter(Adapter):
 
     def k_forces(self, ex, st, step: Step) -> None:
         from ..friction import steady_sliding
-        from .sliding_fit import sliding_model  # the law by name or as an expression
         for i in step.points:
             p = st.points[i]
             v = p.values
@@ -473,6 +487,14 @@ class SlidingFitAdapter(Adapter):
         for i in step.points:
             ex.data[st.name][i]["fit"] = run_fit(st.points[i].values, st.outputs["fit"].options)
             ex.progress.advance(1, st.name)
+
+    def plot_curves(self, plot, st, rows, many: bool, Curve) -> list:
+        from .sliding_fit import fit_curves
+        return [Curve(**kw) for kw in fit_curves(st, rows, many)] if plot.kind == "sliding_fit" else []
+
+    def study_csv(self, st, rows) -> Dict[str, str]:
+        from .sliding_fit import fit_csv
+        return fit_csv(st, rows)
 
 
 #: model name -> its adapter (every model of gecko.scene.models.MODELS has one)

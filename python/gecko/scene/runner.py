@@ -249,15 +249,14 @@ def plot_curves(scene: Scene, plot, data) -> List[Curve]:
                                     meta={"columns": {"a_over_l1": a.ravel(), "status": np.asarray(c["status"]).ravel()},
                                           "shape": a.shape, "levels": st.outputs["contact_contours"].options["levels"],
                                           "l1": l1, "l2": float(p.values["l2"]), "values": p.values}))
-        elif plot.kind == "sliding_fit":
-            from .sliding_fit import fit_curves
-            curves += [Curve(**kw) for kw in fit_curves(st, rows, many)]
         elif plot.kind == "steady_sliding":
             for p in st.points:
                 f = rows[p.index]["forces"]
                 base = st.label_for(p, many)
                 curves.append(Curve(st.name, base, f["V"], f["F_par"], "V", "F_par", "F_par", panel=0))
                 curves.append(Curve(st.name, base, f["V"], f["F_perp"], "V", "F_perp", "F_perp", panel=1))
+        else:  # a plot kind its model's adapter draws
+            curves.extend(ADAPTERS[st.model.name].plot_curves(plot, st, rows, many, Curve))
     return curves
 
 
@@ -331,8 +330,7 @@ def study_csv(study: Study, rows: List[Dict[str, Any]]) -> Dict[str, str]:
             for vals in zip(tr.t, tr.d_par, tr.d_perp, tr.f_par, tr.f_perp):
                 wr.writerow([p.index] + [p.swept[n] for n in swept] + [repr(float(v)) for v in vals])
         out[f"{study.name}.force_trace.csv"] = buf.getvalue()
-    from .sliding_fit import fit_csv
-    out.update(fit_csv(study, rows))
+    out.update(ADAPTERS[study.model.name].study_csv(study, rows))
     return out
 
 
