@@ -89,7 +89,7 @@ def simulate_compliant_seta(N: float, K: _F64, f_par1: float, f_perp1: float, V:
                             G0: Optional[_F64] = None) -> dict[str, Any]: ...
 def fit_steady_sliding(V: _F64, F_par: _F64, F_perp: _F64, N: float, K: _F64, f_par1: float,
                        f_perp1: float, kind: int, G0: float, V_star: float, n: float,
-                       fit_f_par1: bool = True, fit_f_perp1: bool = True,
+                       fit_f_par1: Optional[bool] = None, fit_f_perp1: bool = True,
                        fit_coupling: bool = False, max_iterations: int = 200,
                        sigma_par: Optional[_F64] = None, sigma_perp: Optional[_F64] = None,
                        absolute_sigma: bool = True, profile: bool = False,
