@@ -27,7 +27,7 @@ for r in $(seq 1 "${ROUNDS:-5}"); do  # the order alternates too: neither build 
   "$work/bench_$second" "$@" | sed "s/^/$second $r /" >> "$work/lines"
 done
 python3 - "$work/lines" "$root/bench/results" "$(git -C "$root" rev-parse --short "$base")" \
-  "$(git -C "$root" rev-parse --short HEAD)" "${flags[*]}" <<'PY'
+  "$(git -C "$root" rev-parse --short HEAD)" "${flags[*]//$root/<repo>}" <<'PY'
 import statistics, sys
 from collections import defaultdict
 lines, out, base, head, flags = sys.argv[1:]

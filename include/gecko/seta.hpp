@@ -27,6 +27,7 @@
 #include "gecko/seta/critical_line.hpp"
 #include "gecko/seta/elastica_segment.hpp"
 #include "gecko/seta/solve_critical.hpp"
+#include "gecko/seta/solve_on_line.hpp"
 #include "gecko/seta/two_level_seta.hpp"
 #include "gecko/seta/critical_equations.hpp"
 #include "gecko/seta/sensitivities.hpp"

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "gecko/seta/critical_line.hpp"
+#include "gecko/seta/solve_on_line.hpp"
 #include "seta/seta_shooting.hpp"
 #include "solved.hpp"
 
