@@ -8,26 +8,22 @@ table shows run time and error side by side. Writes friction_python.md/.csv to -
     python3 bench/friction/bench_steady_sliding.py [--out bench/results] [--reps 15]
 """
 import argparse
-import os
 import pathlib
-import statistics
-import time
+import sys
 
 import numpy as np
 
 import gecko
 
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1]))  # bench/, for the shared timing helper
+from _timing import machine_note, time_call, write_results  # noqa: E402
+
 
 def median_time(f, reps):
     """Median wall time; the process CPU time (all threads) of the same calls goes to CPU[]."""
-    t, c = [], []
-    for _ in range(reps):
-        t0, c0 = time.perf_counter(), time.process_time()
-        f()
-        t.append(time.perf_counter() - t0)
-        c.append(time.process_time() - c0)
-    CPU.append(statistics.median(c))
-    return statistics.median(t)
+    t = time_call(f, repeats=reps)
+    CPU.append(t.cpu_median)
+    return t.median
 
 
 CPU = []
@@ -75,22 +71,19 @@ def main():
     rows.append(("gecko.castigliano_compliance + rigidity", "Python z(x), complex-step slope", "default tol", s,
                  float(np.max(np.abs(K / ref - 1)))))
     out = pathlib.Path(a.out)
-    out.mkdir(parents=True, exist_ok=True)
-    with (out / "friction_python.csv").open("w") as f:
-        f.write("function,case,size,seconds,cpu_seconds,rel_error\n")
-        for r, c in zip(rows, CPU):
-            f.write(f"{r[0]},{r[1]},{r[2]},{r[3]:.6g},{c:.6g},{r[4]:.3g}\n")
-    with (out / "friction_python.md").open("w") as f:
-        f.write(f"Python-level friction benchmarks (wall time and process CPU time of all threads, "
-                f"median of {a.reps}; {os.cpu_count()} CPUs, load average {os.getloadavg()[0]:.1f}; "
-                f"numpy {np.__version__})\n\n")
-        f.write("| function | case | size | wall time | CPU time | max rel. error vs eqs 9-10 / closed form |\n"
-                "|---|---|---|---|---|---|\n")
-        fmt = lambda x: f"{x * 1e3:.3g} ms" if x >= 1e-3 else f"{x * 1e6:.3g} us"  # noqa: E731
-        for r, c in zip(rows, CPU):
-            e = "-" if r[4] != r[4] else f"{r[4]:.2g}"
-            f.write(f"| {r[0]} | {r[1]} | {r[2]} | {fmt(r[3])} | {fmt(c)} | {e} |\n")
-    print(f"{os.cpu_count()} CPUs, load average {os.getloadavg()[0]:.1f}")
+    csv = ["function,case,size,seconds,cpu_seconds,rel_error"]
+    csv += [f"{r[0]},{r[1]},{r[2]},{r[3]:.6g},{c:.6g},{r[4]:.3g}" for r, c in zip(rows, CPU)]
+    write_results(out / "friction_python.csv", "\n".join(csv) + "\n")
+    fmt = lambda x: f"{x * 1e3:.3g} ms" if x >= 1e-3 else f"{x * 1e6:.3g} us"  # noqa: E731
+    md = [f"Python-level friction benchmarks (wall time and process CPU time of all threads, "
+          f"median of {a.reps}; {machine_note()}; numpy {np.__version__})", "",
+          "| function | case | size | wall time | CPU time | max rel. error vs eqs 9-10 / closed form |",
+          "|---|---|---|---|---|---|"]
+    for r, c in zip(rows, CPU):
+        e = "-" if r[4] != r[4] else f"{r[4]:.2g}"
+        md.append(f"| {r[0]} | {r[1]} | {r[2]} | {fmt(r[3])} | {fmt(c)} | {e} |")
+    write_results(out / "friction_python.md", "\n".join(md) + "\n")
+    print(machine_note())
     for r, c in zip(rows, CPU):
         print(f"{r[0]:42s} {r[1]:42s} {r[2]:15s} wall {r[3] * 1e3:8.3f} ms  cpu {c * 1e3:8.3f} ms  err {r[4]:.2g}")
 

@@ -14,7 +14,6 @@ import json
 import math
 import os
 import platform
-import statistics
 import sys
 import time
 
@@ -23,6 +22,9 @@ import scipy
 
 import gecko
 from gecko.optimize import optimize_seta, seta_objective
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # bench/, timing helper
+from _timing import time_call, write_results  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 RESULTS = os.path.join(os.path.dirname(HERE), "results")
@@ -134,17 +136,15 @@ def main():
            "load_average_before": os.getloadavg(), "problems": []}
     out["alpha2_study"], out["alpha2_study_checks"] = alpha2_study()
     for name, obj, bounds, cons, base, kw in PROBLEMS:
-        times = []
-        for _ in range(repeats):
-            t = time.perf_counter()
-            r = optimize_seta(obj, bounds, cons, base=base or None, starts=8, seed=0, **kw)
-            times.append(time.perf_counter() - t)
+        timing = time_call(lambda: optimize_seta(obj, bounds, cons, base=base or None, starts=8, seed=0, **kw),
+                           repeats=repeats)
+        r, times = timing.result, timing.wall
         rs = random_search(obj, bounds, cons, base, kw, r.evaluations)
         out["problems"].append({
             "problem": name, "objective": obj, "dimension": len(bounds), "status": r.status,
             "value": r.value, "variables": r.variables, "active": r.active_constraints,
             "kkt_relative_residual": r.kkt.get("relative_residual"),
-            "wall_s_median": statistics.median(times), "wall_s_all": times,
+            "wall_s_median": timing.median, "wall_s_all": times,
             "evaluations": r.evaluations,
             "evaluations_per_start": [s["evaluations"] for s in r.starts],
             "iterations_per_start": [s["iterations"] for s in r.starts],
@@ -153,12 +153,10 @@ def main():
                                               abs(s["value"] - r.value) <= 1e-6 * (1 + abs(r.value))),
             "failures": len(r.failures),
             "random_search_same_budget": rs})
-        print(f"{name}: {r.status} value {r.value:.8g} in {statistics.median(times):.3f} s, "
+        print(f"{name}: {r.status} value {r.value:.8g} in {timing.median:.3f} s, "
               f"{r.evaluations} evaluations (random search: {rs:.6g})", flush=True)
     out["load_average_after"] = os.getloadavg()
-    os.makedirs(RESULTS, exist_ok=True)
-    with open(os.path.join(RESULTS, "optimize.json"), "w") as f:
-        json.dump(out, f, indent=1, default=str)
+    write_results(os.path.join(RESULTS, "optimize.json"), json.dumps(out, indent=1, default=str))
     write_md(out)
 
 
@@ -236,8 +234,7 @@ def write_md(out):
           "- Tests (tests/python/test_optimize.py) check that these optima are true local optima "
           "(KKT with non-negative multipliers, grid and random search over the same bounds), not that "
           "alpha2 equals pi/6.", ""]
-    with open(os.path.join(RESULTS, "optimize.md"), "w") as f:
-        f.write("\n".join(L))
+    write_results(os.path.join(RESULTS, "optimize.md"), "\n".join(L))
 
 
 if __name__ == "__main__":

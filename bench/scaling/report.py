@@ -17,10 +17,14 @@ import csv
 import json
 import math
 import os
+import io
 import subprocess
 import sys
 
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # bench/, shared helper
+from _timing import write_results  # noqa: E402
 
 
 def read_raw(path):
@@ -148,10 +152,8 @@ def main():
         for r in res["memory_python"]:
             r["analytic_peak"] = r["designs"] * (72 + 104 * r["points"])
 
-    os.makedirs(out_dir, exist_ok=True)
-    with open(os.path.join(out_dir, "scaling.json"), "w") as f:
-        json.dump(res, f, indent=1)
-    with open(os.path.join(out_dir, "scaling.csv"), "w", newline="") as f:
+    write_results(os.path.join(out_dir, "scaling.json"), json.dumps(res, indent=1))
+    with io.StringIO(newline="") as f:
         w = csv.writer(f)
         w.writerow(["kind", "case", "threads", "n", "points_per_line", "designs", "median_s", "min_s", "reps", "extra"])
         for r in rows:
@@ -161,6 +163,7 @@ def main():
             w.writerow(["memory_python", "random", 1, m["designs"], m["points"], m["designs"], "", "", 1,
                         f"rss_delta={m['rss_delta']};tracemalloc_peak={m['tracemalloc_peak']};"
                         f"result_bytes={m['result_bytes']};input_bytes={m['input_bytes']}"])
+        write_results(os.path.join(out_dir, "scaling.csv"), f.getvalue())
     write_md(res, os.path.join(out_dir, "scaling.md"))
     plot(res, os.path.join(out_dir, "scaling.png"))
 
@@ -249,8 +252,7 @@ def write_md(res, path):
                      f"{r['result_bytes'] / 1e6:.2f} | {r['rss_delta'] / r['designs']:.0f} | "
                      f"{r['result_bytes'] / r['designs']:.0f} |")
     L.append("\n![log-log time against n](scaling.png)\n")
-    with open(path, "w") as f:
-        f.write("\n".join(L) + "\n")
+    write_results(path, "\n".join(L) + "\n")
 
 
 def plot(res, path):

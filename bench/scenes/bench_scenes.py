@@ -12,11 +12,14 @@ from __future__ import annotations
 import argparse
 import os
 import platform
-import time
+import sys
 from pathlib import Path
 
 import gecko
 from gecko.scene import Cache, plan_scene, load_scene, run_scene
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # bench/, for the shared timing helper
+from _timing import time_call, write_results  # noqa: E402
 
 
 def scene(outputs, designs):
@@ -39,12 +42,7 @@ CASES = [
 
 
 def best_time(sc, repeat):
-    best = float("inf")
-    for _ in range(repeat):
-        t = time.perf_counter()
-        run_scene(sc, cache=Cache(), progress=False, threads=1)
-        best = min(best, time.perf_counter() - t)
-    return best
+    return time_call(lambda: run_scene(sc, cache=Cache(), progress=False, threads=1), repeats=repeat).best
 
 
 def main():
@@ -79,8 +77,7 @@ def main():
               "characteristics and shapes over the same sweep "
               f"({base * 1e3:.1f} ms against {full * 1e3:.1f} ms).", ""]
     text = "\n".join(lines)
-    Path(args.out).parent.mkdir(parents=True, exist_ok=True)
-    Path(args.out).write_text(text, encoding="utf-8")
+    write_results(args.out, text)
     print(text)
 
 

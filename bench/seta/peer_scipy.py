@@ -10,7 +10,6 @@ the reference scene has up to Ft = 9.9.
 """
 import os
 import sys
-import time
 
 import numpy as np
 
@@ -19,8 +18,10 @@ import gecko
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.dirname(HERE))  # bench/, for the shared timing helper
 
 import scipy_peer as peer  # noqa: E402  (bench/seta/scipy_peer.py, no gecko code)
+from _timing import time_call, write_results  # noqa: E402
 
 
 def main():
@@ -30,35 +31,29 @@ def main():
     Ft = np.linspace(0.0, 9.9, n)
     seta = gecko.TwoLevelSeta()
     ref = seta.critical_line(Ft=Ft, tolerance=1e-14).Fn
-    t = time.process_time()
-    fn_peer, _beta, ok = peer.critical_line(peer.REFERENCE, Ft)
-    dt_peer = (time.process_time() - t) / n * 1e6
+    tp = time_call(lambda: peer.critical_line(peer.REFERENCE, Ft), repeats=1)
+    fn_peer, _beta, ok = tp.result
+    dt_peer = tp.cpu_median / n * 1e6
     fn_peer = np.where(ok, fn_peer, np.nan)
     err_peer = np.nanmax(np.abs(fn_peer - ref) / np.maximum(1, np.abs(ref)))
     failed_peer = int(np.sum(~np.isfinite(fn_peer)))
-    times = []
-    for _ in range(7):
-        t = time.process_time()
-        g = seta.critical_line(Ft=Ft)
-        times.append((time.process_time() - t) / n * 1e6)
-    dt_gecko = sorted(times)[3]
+    tg = time_call(lambda: seta.critical_line(Ft=Ft), repeats=7)
+    g = tg.result
+    dt_gecko = tg.cpu_median / n * 1e6
     err_gecko = np.max(np.abs(g.Fn - ref) / np.maximum(1, np.abs(ref)))
     rows = [("scipy peer (quad + fsolve)", "xtol 1e-13", dt_peer, err_peer, failed_peer),
             ("gecko Python TwoLevelSeta.critical_line", "default", dt_gecko, err_gecko, int(np.sum(g.status != 0)))]
     for r in rows:
         print(f"{r[0]:40s} {r[1]:12s} {r[2]:10.3f} us/point  err vs gecko 1e-14: {r[3]:.1e}  failed {r[4]}")
     out = os.path.join(ROOT, "bench", "results")
-    with open(os.path.join(out, "seta.csv"), "a") as f:
-        for r in rows:
-            f.write(f"{r[0]},{r[1]},{r[2]},{r[3]},{r[4]}\n")
-    with open(os.path.join(out, "seta.md"), "a") as f:
-        f.write("\nPython, same grid, same run (process CPU time; the peer's error is against gecko at "
-                "tolerance 1e-14, which matches the mpmath references to 4e-14):\n\n")
-        f.write("| method | setting | us/point | max rel. error of Fn | failed points |\n|---|---|---:|---:|---:|\n")
-        for r in rows:
-            f.write(f"| {r[0]} | {r[1]} | {r[2]:.3f} | {r[3]:.1e} | {r[4]} |\n")
-        f.write(f"\nSpeed-up of the gecko Python call over the scipy peer on the same grid: "
-                f"{dt_peer / dt_gecko:.0f}x.\n")
+    write_results(os.path.join(out, "seta.csv"), "".join(f"{r[0]},{r[1]},{r[2]},{r[3]},{r[4]}\n" for r in rows),
+                  append=True)
+    md = ("\nPython, same grid, same run (process CPU time; the peer's error is against gecko at "
+          "tolerance 1e-14, which matches the mpmath references to 4e-14):\n\n"
+          "| method | setting | us/point | max rel. error of Fn | failed points |\n|---|---|---:|---:|---:|\n")
+    md += "".join(f"| {r[0]} | {r[1]} | {r[2]:.3f} | {r[3]:.1e} | {r[4]} |\n" for r in rows)
+    md += f"\nSpeed-up of the gecko Python call over the scipy peer on the same grid: {dt_peer / dt_gecko:.0f}x.\n"
+    write_results(os.path.join(out, "seta.md"), md, append=True)
 
 
 if __name__ == "__main__":

@@ -20,7 +20,6 @@ reports failure or converges to a wrong state. The reference scene has none up t
 from __future__ import annotations
 
 import math
-import time
 from typing import Mapping, Sequence, Tuple
 
 import numpy as np
@@ -86,10 +85,13 @@ def critical_line(p: Mapping[str, float], Ft: Sequence[float], guess=(0.25, 1.47
 
 
 if __name__ == "__main__":
+    import os
+    import sys
+    sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # bench/, timing helper
+    from _timing import timed_once
+
     grid = np.linspace(0.0, 9.6, 200)
-    t0 = time.perf_counter()
-    Fn, beta, ok = critical_line(REFERENCE, grid)
-    dt = time.perf_counter() - t0
+    (Fn, beta, ok), dt = timed_once(lambda: critical_line(REFERENCE, grid))
     print(f"scipy peer: {grid.size} points in {dt:.3f} s = {dt / grid.size * 1e6:.0f} us/point")
     for i in range(0, grid.size, 40):
         print(f"Ft={grid[i]:.3f} Fn={Fn[i]:.12f} theta_joint={beta[i]:.12f} converged={ok[i]}")

@@ -21,14 +21,16 @@ shared: the load average is recorded beside the times, and the ratio is the numb
 from __future__ import annotations
 
 import argparse
-import json
 import math
 import os
 import platform
-import time
+import sys
 from pathlib import Path
 
 import gecko
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))  # bench/, for the shared timing helper
+from _timing import timed_once, write_results  # noqa: E402
 
 BOUNDS = {"EI1": (1.0, 10.0), "EI2": (0.1, 5.0, "log"), "l2": (0.05, 0.3), "alpha2": (0.0, math.pi / 4),
           "EA2": (10.0, 500.0, "log")}
@@ -36,9 +38,7 @@ RESULTS = Path(__file__).resolve().parents[1] / "results"
 
 
 def timed(fn):
-    t = time.perf_counter()
-    out = fn()
-    return out, time.perf_counter() - t
+    return timed_once(fn)
 
 
 def main():
@@ -99,8 +99,7 @@ def main():
                           for l, t, r in depth_rows]
 
     out = Path(a.out)
-    out.mkdir(parents=True, exist_ok=True)
-    (out / "sweep.json").write_text(json.dumps(res, indent=1) + "\n")
+    write_results(out / "sweep.json", res)
     md = [f"# Design sweep: characteristics of {a.designs:,} random designs", "",
           f"`PYTHONPATH=python python3 bench/sweep/bench_sweep.py --designs {a.designs} --cores {a.cores} "
           f"--chunk-size {a.chunk_size}`  (gecko {gecko.__version__}, {platform.machine()}, "
@@ -118,7 +117,7 @@ def main():
     md += ["", f"Only the outputs asked for are computed ({m:,} designs, local threads, {a.cores} cores):", "",
            "| outputs | wall time (s) | designs/s |", "|---|---:|---:|"]
     md += [f"| {l} | {t:.2f} | {r:,.0f} |" for l, t, r in depth_rows]
-    (out / "sweep.md").write_text("\n".join(md) + "\n")
+    write_results(out / "sweep.md", "\n".join(md) + "\n")
     print("\n".join(md))
 
 

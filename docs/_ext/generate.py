@@ -56,7 +56,8 @@ def _api(out: Path) -> None:
     import gecko.plot as gp
     lines += [f"   gecko.plot.{n}" for n in gp.__all__ if callable(getattr(gp, n))]
     lines += ["```", "", "## Modules", "", "```{eval-rst}", ".. autosummary::", "   :toctree: api", "",
-              "   gecko.plot", "   gecko.scene", "   gecko.designs", "   gecko.cli", "```", ""]
+              "   gecko.plot", "   gecko.scene", "   gecko.friction_hierarchy", "   gecko.designs", "   gecko.cli",
+              "```", ""]
     (out / "api.md").write_text("\n".join(lines))
 
 

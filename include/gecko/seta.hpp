@@ -10,6 +10,7 @@
 //   critical_line_at(seta, Ft...)                the line at given Ft values
 //   critical_line_batch(designs, Ft, threads)    many designs x many Ft, multithreaded
 //   characteristics(seta)                        (Fn)0, k, max pull-off, (Ft)max, stickiness
+//   small_deformation(seta), small_deformation_fn  the linear theory, paper eqs 7, 18-22
 //   characteristics_batch(designs, n, depth, out, threads)  many designs, each solved only to `depth`
 //   critical_equations(seta, Ft, ...)            residual and exact Jacobian at a state
 //   sensitivities(seta, Ft)                      dFn/d(design) by implicit differentiation
@@ -31,3 +32,4 @@
 #include "gecko/seta/sensitivities.hpp"
 #include "gecko/seta/shape.hpp"
 #include "gecko/seta/single_fiber.hpp"
+#include "gecko/seta/small_deformation.hpp"

@@ -64,7 +64,14 @@ def steady_sliding_energy(V: _F64, G: _F64, N: float, K: _F64, f_par1: float, f_
                           ) -> tuple[_F64, _F64, Optional[_F64], Optional[_F64]]: ...
 def simulate_spatulae(N: float, K: _F64, f_par1: float, f_perp1: float, V: float, G: float,
                       spatulae: int, duration: float, t_off: float, exponential: bool,
-                      samples: int, seed: int) -> dict[str, Any]: ...
+                      samples: int, seed: int, length: Optional[_F64] = None,
+                      stiffness: Optional[_F64] = None,
+                      G0: Optional[_F64] = None) -> dict[str, Any]: ...
+def simulate_compliant_seta(N: float, K: _F64, f_par1: float, f_perp1: float, V: float, G: float,
+                            spring: float, spatulae: int, duration: float, t_off: float,
+                            exponential: bool, transient: float, samples: int, seed: int,
+                            length: Optional[_F64] = None, stiffness: Optional[_F64] = None,
+                            G0: Optional[_F64] = None) -> dict[str, Any]: ...
 def fit_steady_sliding(V: _F64, F_par: _F64, F_perp: _F64, N: float, K: _F64, f_par1: float,
                        f_perp1: float, kind: int, G0: float, V_star: float, n: float,
                        fit_f_par1: bool = True, fit_f_perp1: bool = True,
@@ -90,11 +97,11 @@ def seta_critical_line(params: _F64, ft_end: float = ..., resolve_nodes: bool = 
                        strain_limit: float = ...) -> dict[str, Any]: ...
 def seta_solve(params: _F64, Ft: float, Fn: float = ..., theta_joint: float = ...,
                theta_rate_joint: float = ..., theta_rate_base: float = ..., tolerance: float = ...,
-               max_iterations: int = 40, strain_limit: float = ...) -> dict[str, Any]: ...
-def seta_characteristics(params: _F64, ft_end: float = ..., strain_limit: float = ...) -> dict[str, Any]: ...
+               max_iterations: int = 40, strain_limit: float = ...) -> CriticalState: ...
+def seta_characteristics(params: _F64, ft_end: float = ..., strain_limit: float = ...) -> SetaCharacteristicsResult: ...
 def seta_batch(designs: _F64, Ft: _F64, errors: int = 0, threads: int = 1, tolerance: float = ...,
                strain_limit: float = ...) -> dict[str, Any]: ...
-def seta_small_deformation(params: _F64) -> dict[str, Any]: ...
+def seta_small_deformation(params: _F64) -> SmallDeformation: ...
 # Design sweep (gecko.design_sweep): characteristics of n designs (flat n*9), depth 0 closed forms,
 # 1 + natural state (fn0, slope_k, sticky_at_rest), 2 + the line to its end; flat columns of length
 # n (float64; int8 sticky_at_rest, small_non_sticky, min_fn_interior; int32 status, line_end, folds).
@@ -181,3 +188,63 @@ class FitStatus(enum.IntEnum):
     not_identifiable = 3
     no_progress = 4
     non_finite = 5
+
+# ---- seta result types (src/bindings/seta.cpp, src/bindings/result_types.hpp) ----------------
+# Read-only attributes named in `fields`; dict-style access (keys, items, values, get, [], in,
+# iter, len; enums as plain ints) is kept for code written when these were dicts (deprecated).
+class _Result:
+    fields: tuple[str, ...]
+    def __getitem__(self, key: str) -> Any: ...
+    def keys(self) -> list[str]: ...
+    def items(self) -> list[tuple[str, Any]]: ...
+    def values(self) -> list[Any]: ...
+    def get(self, key: str, default: Any = None) -> Any: ...
+    def __contains__(self, key: object) -> bool: ...
+    def __len__(self) -> int: ...
+
+class CriticalState(_Result):
+    Ft: float
+    Fn: float
+    theta_joint: float
+    theta_rate_joint: float
+    theta_rate_base: float
+    status: CriticalStatus
+    turning_points_beam: int
+    turning_points_spatula: int
+    min_z: float
+    min_z_at: float
+    max_axial_strain: float
+    iterations: int
+
+class SetaCharacteristicsResult(_Result):
+    fn0: float
+    slope_k: float
+    min_fn: float
+    ft_at_min_fn: float
+    min_fn_interior: bool
+    max_pull_off: float
+    ft_max: float
+    ft_at_line_end: float
+    fn_at_line_end: float
+    sticky_at_rest: bool
+    small_fn0: float
+    small_slope_k: float
+    small_contact_length: float
+    small_non_sticky: bool
+    admissible_to_end: bool
+    admissible_end_ft: float
+    admissible_end_fn: float
+    slope_at_zero: float
+    paper_k: float
+    max_pull_off_is_bound: bool
+    max_pull_off_bound: float
+    min_status: MinimumStatus
+    slope_at_min_fn: float
+    end: LineEnd
+    folds: list[float]
+
+class SmallDeformation(_Result):
+    fn0: float
+    slope_k: float
+    contact_length: float
+    non_sticky: bool

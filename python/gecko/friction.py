@@ -24,6 +24,7 @@ C++ without the GIL. Bad input raises ``ValueError`` naming the argument and the
 from __future__ import annotations
 
 import dataclasses
+import math
 from typing import Callable, NamedTuple, Optional
 
 import numpy as np
@@ -951,12 +952,24 @@ class SpatulaSimulation(NamedTuple):
     t: np.ndarray        # sample times (midpoints) and F(t) there
     F_par: np.ndarray
     F_perp: np.ndarray
+    # eqs 9-10 (with the duty factor of eqs 5-6) at the mean parameters, averaged over the
+    # simulated population, and the bound on |mean - population| (fixed re-sticking; inf else)
+    mean_field_par: float = math.nan
+    mean_field_perp: float = math.nan
+    population_par: float = math.nan
+    population_perp: float = math.nan
+    bound_par: float = math.nan
+    bound_perp: float = math.nan
+    # eqs 9-10 averaged over the distributions themselves (NaN when a factor is an array)
+    expected_par: float = math.nan
+    expected_perp: float = math.nan
+    factors: Optional[dict] = None  # the drawn per-spatula factors (None: all spatulae equal)
 
 
 def simulate_spatulae(V: float, model: SlidingModel = FIG6_VISCOELASTIC, *, spatulae: int = 1000,
                       duration: Optional[float] = None, t_off=0.0, spatula=None,
-                      resticking: str = "fixed", samples: int = 200, seed: int = 1
-                      ) -> SpatulaSimulation:
+                      resticking: str = "fixed", samples: int = 200, seed: int = 1,
+                      length=None, stiffness=None, G0=None) -> SpatulaSimulation:
     """Simulate independent spatulae dragged at ``V``: a stochastic check of :func:`steady_sliding`.
 
     Each spatula sticks, stretches, detaches and re-sticks after ``t_off`` (fixed, or exponential
@@ -982,6 +995,15 @@ def simulate_spatulae(V: float, model: SlidingModel = FIG6_VISCOELASTIC, *, spat
         Sample times of F(t) (default 200).
     seed : int, optional
         Random seed (default 1); a seed gives the same result everywhere.
+    length, stiffness, G0 : optional
+        A population: per-spatula factors on the spatula of ``model`` (None: all 1; a number;
+        an array of one value per simulated spatula; or a distribution of mean 1,
+        ``{"dist": "lognormal", "sigma": s}`` or ``{"dist": "uniform", "width": h}``, drawn
+        from ``seed``). Spatula i has K_i = c_i K and re-sticking forces c_i f1 with
+        c_i = stiffness_i / length_i**3 (K ~ EI / L**3, Appendix 1), G_i = G0_i G(V) and
+        t_off_i = length_i**2 t_off (eq 4). The result then also carries eqs 9-10 at the mean
+        parameters (``mean_field_*``), averaged over the drawn spatulae (``population_*``, what
+        the simulation converges to) and over the distributions (``expected_*``).
 
     Returns
     -------
@@ -1009,12 +1031,34 @@ def simulate_spatulae(V: float, model: SlidingModel = FIG6_VISCOELASTIC, *, spat
     if duration is None:
         ss = steady_sliding(V, model, t_off=t_off)
         duration = 100.0 * (ss.t_on + t_off)
+    from . import _population
+    specs = {"length": length, "stiffness": stiffness, "G0": G0}
+    factors = None
+    if any(v is not None for v in specs.values()):
+        if isinstance(spatulae, bool) or not isinstance(spatulae, (int, np.integer)) or spatulae < 1:
+            raise ValueError(f"spatulae = {spatulae!r} is out of range: need an integer >= 1")
+        # the population's own stream, apart from the C++ phases' (a population seeded 1 is
+        # the same population whatever the phases)
+        rng = np.random.default_rng([int(seed), 0x5EA])
+        factors = {k: _population.draw(v, int(spatulae), rng, k) for k, v in specs.items()}
     r = _core.simulate_spatulae(float(model.N), _matrix(model.K), float(model.f_par1),
                                 float(model.f_perp1), V, G, int(spatulae), float(duration),
-                                float(t_off), resticking == "exponential", int(samples), int(seed))
+                                float(t_off), resticking == "exponential", int(samples), int(seed),
+                                **(factors or {}))
+    expected = (r["population_par"], r["population_perp"]) if factors is None else None
+    if factors is not None and V > 0:
+        def single(Gp):
+            return _core.steady_sliding_energy(np.full(Gp.size, V), np.ascontiguousarray(Gp),
+                                               float(model.N), _matrix(model.K),
+                                               float(model.f_par1), float(model.f_perp1), 0.0, 0,
+                                               False)[:3]
+        expected = _population.expected_forces(specs, V, G, float(t_off), single)
+    exp_par, exp_perp = expected if expected is not None else (math.nan, math.nan)
     return SpatulaSimulation(r["mean_par"], r["mean_perp"], r["std_par"], r["std_perp"],
                              r["stretch"], r["t_on"], int(r["detachments"]), r["t"], r["F_par"],
-                             r["F_perp"])
+                             r["F_perp"], r["mean_field_par"], r["mean_field_perp"],
+                             r["population_par"], r["population_perp"], r["bound_par"],
+                             r["bound_perp"], exp_par, exp_perp, factors)
 
 
 @dataclasses.dataclass(frozen=True)

@@ -675,3 +675,9 @@ def contact_contours(ax, Fn, Ft, a, *, status=None, levels=9, l2_over_l1: Option
         ax.plot([], [], color=color or "k", label=label)
     ax.grid(True, linewidth=0.4, alpha=0.5)
     return cs
+
+
+# ---- the hierarchy of paper 000's Discussion (gecko.plot_hierarchy) -----------------------------
+from .plot_hierarchy import compliant_seta_trace, population_forces, stick_slip_map  # noqa: E402
+
+__all__ += ["population_forces", "compliant_seta_trace", "stick_slip_map"]

@@ -42,7 +42,7 @@ from ._vectorize import real_array as _real_array
 __all__ = [
     "TwoLevelSeta", "SingleFiber", "CriticalLine", "SetaCharacteristics", "kendall_fn", "rivlin_fn",
     "critical_line_batch", "STATUS", "DESIGN_FIELDS", "SetaDesign", "CriticalStatus", "LineEnd",
-    "MinimumStatus", "ContactState", "ContactStatus",
+    "MinimumStatus", "ContactState", "ContactStatus", "CriticalState", "SmallDeformation",
 ]
 
 # The domain comes from C++ (src/bindings/seta_types.cpp): the design type with its fields, defaults
@@ -53,6 +53,10 @@ DESIGN_FIELDS = tuple(SetaDesign.fields)
 CriticalStatus = _core.CriticalStatus
 LineEnd = _core.LineEnd
 MinimumStatus = _core.MinimumStatus
+# Result types bound from the C++ structs (read-only attributes, readable repr). Indexing them like
+# the dicts they replace (state["Fn"], dict(state)) still works but is deprecated.
+CriticalState = _core.CriticalState
+SmallDeformation = _core.SmallDeformation
 
 STATUS = {
     0: "converged",
@@ -594,7 +598,7 @@ class TwoLevelSeta:
                             **fields)
 
     def solve(self, Ft: float, guess=None, *, tolerance: Optional[float] = None, max_iterations: int = 40,
-              strain_limit: Optional[float] = None) -> dict:
+              strain_limit: Optional[float] = None) -> CriticalState:
         """One critical state at ``Ft``.
 
         Parameters
@@ -613,10 +617,12 @@ class TwoLevelSeta:
 
         Returns
         -------
-        dict
-            ``Ft, Fn, theta_joint, status, iterations, theta_rate_joint, theta_rate_base,
-            turning_points_beam, turning_points_spatula, min_z, min_z_at, max_axial_strain``
-            (status 7, values kept: the seta crosses the substrate or exceeds ``strain_limit``).
+        CriticalState
+            Attributes ``Ft, Fn, theta_joint, theta_rate_joint, theta_rate_base, status``
+            (:class:`CriticalStatus`; 7, values kept: the seta crosses the substrate or exceeds
+            ``strain_limit``), ``turning_points_beam, turning_points_spatula, min_z, min_z_at,
+            max_axial_strain, iterations``. Indexing it like the dict it replaces
+            (``state["Fn"]``, statuses as ints) still works but is deprecated.
 
         Raises
         ------
@@ -627,8 +633,8 @@ class TwoLevelSeta:
         --------
         >>> import gecko
         >>> state = gecko.TwoLevelSeta().solve(5.0, guess=(-2.4, 1.49))
-        >>> round(state["Fn"], 6), state["status"]
-        (-2.448406, 0)
+        >>> round(state.Fn, 6), state.status.name
+        (-2.448406, 'converged')
         """
         tol = _check_tolerance(tolerance)
         max_iterations = _check_count(max_iterations, "max_iterations")
@@ -745,7 +751,7 @@ class TwoLevelSeta:
         """
         return dict(_core.seta_shape(self._params(), float(Ft), int(steps)))
 
-    def small_deformation(self) -> dict:
+    def small_deformation(self) -> dict:  # a dict of the bound SmallDeformation
         """The small-deformation (linear) theory, paper 001 eqs 7 and 18-22.
 
         Qualitative by the paper's own account: at the reference scene (Fn)0 = 0.34 against the exact

@@ -90,6 +90,34 @@ struct python_shape {
   }
 };
 
+// The run options and result fields that simulate_spatulae and simulate_compliant_seta share.
+template <class Options>
+void set_run_options(Options& o, std::size_t spatulae, double duration, double t_off,
+                     bool exponential, std::size_t samples, std::uint64_t seed) {
+  o.spatulae = spatulae;
+  o.duration = duration;
+  o.t_off = t_off;
+  o.law = exponential ? resticking::exponential : resticking::fixed;
+  o.samples = samples;
+  o.seed = seed;
+}
+
+template <class Result>
+py::dict run_fields(const Result& r) {
+  py::dict out;
+  out["mean_par"] = r.mean_par;
+  out["mean_perp"] = r.mean_perp;
+  out["std_par"] = r.std_par;
+  out["std_perp"] = r.std_perp;
+  out["stretch"] = r.stretch;
+  out["t_on"] = r.t_on;
+  out["detachments"] = r.detachments;
+  out["t"] = py::array_t<double>(r.t.size(), r.t.data());
+  out["F_par"] = py::array_t<double>(r.F_par.size(), r.F_par.data());
+  out["F_perp"] = py::array_t<double>(r.F_perp.size(), r.F_perp.data());
+  return out;
+}
+
 sliding_params<double> make_params(double N, const darray& K, double f_par1, double f_perp1) {
   sliding_params<double> p;
   p.N = N;
@@ -330,38 +358,82 @@ void bind_friction(py::module_& m) {
      py::arg("t_off") = 0.0, py::arg("errors") = 0, py::arg("forces_only") = false);
 
   // ---- simulation --------------------------------------------------------------------------
-  m.def("simulate_spatulae", [](double N, const darray& K, double f_par1, double f_perp1,
-                                double V, double G, std::size_t spatulae, double duration,
-                                double t_off, bool exponential, std::size_t samples,
-                                std::uint64_t seed) {
+  // Population factors: None (all 1) or a flat array with one entry per simulated spatula (the
+  // C++ side checks sizes and values).
+  auto factors = [](const py::object& length, const py::object& stiffness, const py::object& G0) {
+    auto one = [](const py::object& a) {
+      std::vector<double> v;
+      if (a.is_none()) return v;
+      const darray arr = a.cast<darray>();
+      if (arr.ndim() != 1)
+        throw std::invalid_argument("gecko._core: population factors must be flat arrays");
+      v.assign(arr.data(), arr.data() + arr.size());
+      return v;
+    };
+    spatula_population<double> pop;
+    pop.length = one(length);
+    pop.stiffness = one(stiffness);
+    pop.G0 = one(G0);
+    return pop;
+  };
+  m.def("simulate_spatulae", [factors](double N, const darray& K, double f_par1, double f_perp1,
+                                       double V, double G, std::size_t spatulae, double duration,
+                                       double t_off, bool exponential, std::size_t samples,
+                                       std::uint64_t seed, py::object length, py::object stiffness,
+                                       py::object G0) {
     const auto p = make_params(N, K, f_par1, f_perp1);
     spatula_simulation_options<double> o;
-    o.spatulae = spatulae;
-    o.duration = duration;
-    o.t_off = t_off;
-    o.law = exponential ? resticking::exponential : resticking::fixed;
-    o.samples = samples;
-    o.seed = seed;
+    set_run_options(o, spatulae, duration, t_off, exponential, samples, seed);
+    const spatula_population<double> pop = factors(length, stiffness, G0);
     spatula_simulation_result<double> r;
     {
       py::gil_scoped_release release;
-      r = gecko::simulate_spatulae(p, [G](double) { return G; }, V, o);
+      auto law = [G](double) { return G; };
+      r = pop.empty() ? gecko::simulate_spatulae(p, law, V, o)
+                      : gecko::simulate_spatulae(p, law, V, o, pop);
     }
-    py::dict out;
-    out["mean_par"] = r.mean_par;
-    out["mean_perp"] = r.mean_perp;
-    out["std_par"] = r.std_par;
-    out["std_perp"] = r.std_perp;
-    out["stretch"] = r.stretch;
-    out["t_on"] = r.t_on;
-    out["detachments"] = r.detachments;
-    out["t"] = py::array_t<double>(r.t.size(), r.t.data());
-    out["F_par"] = py::array_t<double>(r.F_par.size(), r.F_par.data());
-    out["F_perp"] = py::array_t<double>(r.F_perp.size(), r.F_perp.data());
+    py::dict out = run_fields(r);
+    out["mean_field_par"] = r.mean_field_par;
+    out["mean_field_perp"] = r.mean_field_perp;
+    out["population_par"] = r.population_par;
+    out["population_perp"] = r.population_perp;
+    out["bound_par"] = r.bound_par;
+    out["bound_perp"] = r.bound_perp;
     return out;
   }, py::arg("N"), py::arg("K"), py::arg("f_par1"), py::arg("f_perp1"), py::arg("V"), py::arg("G"),
      py::arg("spatulae"), py::arg("duration"), py::arg("t_off"), py::arg("exponential"),
-     py::arg("samples"), py::arg("seed"));
+     py::arg("samples"), py::arg("seed"), py::arg("length") = py::none(),
+     py::arg("stiffness") = py::none(), py::arg("G0") = py::none());
+  m.def("simulate_compliant_seta", [factors](double N, const darray& K, double f_par1,
+                                             double f_perp1, double V, double G, double spring,
+                                             std::size_t spatulae, double duration, double t_off,
+                                             bool exponential, double transient,
+                                             std::size_t samples, std::uint64_t seed,
+                                             py::object length, py::object stiffness,
+                                             py::object G0) {
+    const auto p = make_params(N, K, f_par1, f_perp1);
+    compliant_seta_options<double> o;
+    set_run_options(o, spatulae, duration, t_off, exponential, samples, seed);
+    o.spring = spring;
+    o.transient = transient;
+    const spatula_population<double> pop = factors(length, stiffness, G0);
+    compliant_seta_result<double> r;
+    {
+      py::gil_scoped_release release;
+      r = gecko::simulate_compliant_seta(p, [G](double) { return G; }, V, o, pop);
+    }
+    py::dict out = run_fields(r);
+    out["max_drop"] = r.max_drop;
+    out["max_slip_size"] = r.max_slip_size;
+    out["slips"] = r.slips;
+    out["collective_stiffness"] = r.collective_stiffness;
+    out["lag"] = py::array_t<double>(r.lag.size(), r.lag.data());
+    return out;
+  }, py::arg("N"), py::arg("K"), py::arg("f_par1"), py::arg("f_perp1"), py::arg("V"), py::arg("G"),
+     py::arg("spring"), py::arg("spatulae"), py::arg("duration"), py::arg("t_off"),
+     py::arg("exponential"), py::arg("transient"), py::arg("samples"), py::arg("seed"),
+     py::arg("length") = py::none(), py::arg("stiffness") = py::none(),
+     py::arg("G0") = py::none());
 
   // ---- fit ---------------------------------------------------------------------------------
   // kind 0 viscoelastic, 1 Eyring (GIL released), 2 a Python law G(V, p) with named parameters

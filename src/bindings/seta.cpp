@@ -2,6 +2,9 @@
 // Designs travel as 9 doubles (EI1, EI2, EA1, EA2, l1, l2, alpha1, alpha2, w); arrays are flat
 // float64; every C++ loop runs without the GIL (errors raised inside leave the released scope
 // normally, so pybind11 re-acquires the GIL before turning std::domain_error into ValueError).
+// Result structs are described once, by field tables (result_types.hpp): one result is a bound
+// type (CriticalState, SetaCharacteristicsResult, SmallDeformation), many are numpy columns.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -16,6 +19,7 @@
 #include "gecko/core/parallel.hpp"
 #include "gecko/peel.hpp"
 #include "gecko/seta.hpp"
+#include "result_types.hpp"
 #include "vectorize.hpp"
 
 namespace gecko {
@@ -48,50 +52,86 @@ critical_line_options<double> line_options(double ft_end, double tolerance,
   return o;
 }
 
-// Columns of critical states.
-struct state_columns {
-  py::array_t<double> Fn, theta_joint, rate_joint, rate_base, min_z, min_z_at, max_strain;
-  py::array_t<std::int32_t> status, iterations, tp_beam, tp_spatula;
-  explicit state_columns(py::ssize_t n)
-      : Fn(n), theta_joint(n), rate_joint(n), rate_base(n), min_z(n), min_z_at(n), max_strain(n), status(n),
-        iterations(n), tp_beam(n), tp_spatula(n) {}
-  struct raw {
-    double *Fn, *theta_joint, *rate_joint, *rate_base, *min_z, *min_z_at, *max_strain;
-    std::int32_t *status, *iterations, *tp_beam, *tp_spatula;
-    void put(std::size_t i, const critical_state<double>& s) const {
-      min_z[i] = s.min_z;
-      min_z_at[i] = s.min_z_at;
-      max_strain[i] = s.max_axial_strain;
-      Fn[i] = s.Fn;
-      theta_joint[i] = s.theta_joint;
-      rate_joint[i] = s.theta_rate_joint;
-      rate_base[i] = s.theta_rate_base;
-      status[i] = static_cast<std::int32_t>(s.status);
-      iterations[i] = s.iterations;
-      tp_beam[i] = s.turning_points_beam;
-      tp_spatula[i] = s.turning_points_spatula;
-    }
-  };
-  raw pointers() {
-    return {Fn.mutable_data(), theta_joint.mutable_data(), rate_joint.mutable_data(), rate_base.mutable_data(),
-            min_z.mutable_data(), min_z_at.mutable_data(), max_strain.mutable_data(), status.mutable_data(), iterations.mutable_data(), tp_beam.mutable_data(), tp_spatula.mutable_data()};
-  }
-  py::dict as_dict() const {
-    py::dict d;
-    d["Fn"] = Fn;
-    d["theta_joint"] = theta_joint;
-    d["theta_rate_joint"] = rate_joint;
-    d["theta_rate_base"] = rate_base;
-    d["status"] = status;
-    d["iterations"] = iterations;
-    d["turning_points_beam"] = tp_beam;
-    d["turning_points_spatula"] = tp_spatula;
-    d["min_z"] = min_z;
-    d["min_z_at"] = min_z_at;
-    d["max_axial_strain"] = max_strain;
-    return d;
-  }
-};
+// ---- field tables: each result struct's Python names, written once -------------------------
+#define GECKO_F(m) GECKO_RESULT_FIELD(S, m)
+
+// What a critical state and a traced node of the line share.
+template <class S>
+auto shared_state_fields() {
+  return std::make_tuple(GECKO_F(Fn), GECKO_F(theta_joint), GECKO_F(theta_rate_joint), GECKO_F(theta_rate_base),
+                         GECKO_F(status), GECKO_F(turning_points_beam), GECKO_F(turning_points_spatula),
+                         GECKO_F(min_z), GECKO_F(min_z_at), GECKO_F(max_axial_strain));
+}
+
+// Columns of states at requested Ft (the caller knows Ft).
+template <class S = critical_state<double>>
+auto state_column_fields() {
+  return std::tuple_cat(shared_state_fields<S>(), std::make_tuple(GECKO_F(iterations)));
+}
+
+template <class S = critical_state<double>>
+auto critical_state_fields() {
+  return std::tuple_cat(std::make_tuple(GECKO_F(Ft)), state_column_fields<S>());
+}
+
+template <class S = critical_line_point<double>>
+auto line_node_fields() {
+  return std::tuple_cat(std::make_tuple(GECKO_F(Ft)), shared_state_fields<S>(), std::make_tuple(GECKO_F(branch)));
+}
+
+// What the characteristics of one seta and the batch's per-design characteristics share.
+template <class S>
+auto shared_characteristic_fields() {
+  return std::make_tuple(
+      GECKO_F(fn0), GECKO_F(slope_k), GECKO_F(min_fn), GECKO_F(ft_at_min_fn), GECKO_F(min_fn_interior),
+      GECKO_F(max_pull_off), GECKO_F(ft_max), GECKO_F(ft_at_line_end), GECKO_F(fn_at_line_end),
+      GECKO_F(sticky_at_rest), field("small_fn0", [](const S& s) { return s.small.fn0; }),
+      field("small_slope_k", [](const S& s) { return s.small.slope_k; }),
+      field("small_contact_length", [](const S& s) { return s.small.contact_length; }),
+      field("small_non_sticky", [](const S& s) { return s.small.non_sticky; }), GECKO_F(admissible_to_end),
+      GECKO_F(admissible_end_ft), GECKO_F(admissible_end_fn), GECKO_F(slope_at_zero), GECKO_F(paper_k),
+      GECKO_F(max_pull_off_is_bound), GECKO_F(max_pull_off_bound));
+}
+
+template <class S = seta_characteristics<double>>
+auto characteristics_fields() {
+  return std::tuple_cat(shared_characteristic_fields<S>(), std::make_tuple(GECKO_F(min_status),
+                        GECKO_F(slope_at_min_fn), GECKO_F(end), GECKO_F(folds)));
+}
+
+// The batch's columns; line_end is -1 below depth whole_line (set by the caller).
+template <class S = design_characteristics<double>>
+auto design_characteristics_fields() {
+  return std::tuple_cat(std::make_tuple(GECKO_F(status)), shared_characteristic_fields<S>(),
+                        std::make_tuple(field("line_end", [](const S& s) { return s.end; }), GECKO_F(folds)));
+}
+
+template <class S = small_deformation_line<double>>
+auto small_deformation_fields() {
+  return std::make_tuple(GECKO_F(fn0), GECKO_F(slope_k), GECKO_F(contact_length), GECKO_F(non_sticky));
+}
+
+#undef GECKO_F
+
+void bind_result_types(py::module_& m) {
+  bind_result<critical_state<double>>(m, "CriticalState",
+                                      "One critical state (TwoLevelSeta.solve): forces, joint angle and rates, "
+                                      "status (CriticalStatus), admissibility.",
+                                      critical_state_fields());
+  bind_result<seta_characteristics<double>>(m, "SetaCharacteristicsResult",
+                                            "Characteristics of one seta as computed (gecko.SetaCharacteristics "
+                                            "is built from it).",
+                                            characteristics_fields());
+  bind_result<small_deformation_line<double>>(m, "SmallDeformation",
+                                              "The small-deformation theory's (Fn)0, k, contact length at rest "
+                                              "and non-sticky criterion (paper 001 eqs 7, 18-22).",
+                                              small_deformation_fields());
+}
+
+template <class S>
+py::dict state_columns(const std::vector<S>& rows) {
+  return columns(rows.data(), rows.size(), state_column_fields<S>());
+}
 
 void line_at(const TwoLevelSeta<double>& s, const double* Ft, std::size_t n, int errors,
              const critical_line_options<double>& o, std::vector<critical_state<double>>& out) {
@@ -105,6 +145,7 @@ void line_at(const TwoLevelSeta<double>& s, const double* Ft, std::size_t n, int
 void bind_seta_contact(py::module_& m);  // the forward problem, at the end of this file
 
 void bind_seta(py::module_& m) {
+  bind_result_types(m);
   bind_seta_contact(m);
   m.def("seta_validate", [](const darray& params, double Ft) {
     const auto s = design_from(params);
@@ -117,17 +158,14 @@ void bind_seta(py::module_& m) {
                                     double strain_limit) {
     const auto s = design_from(params);
     const auto n = static_cast<std::size_t>(Ft.size());
-    state_columns cols(static_cast<py::ssize_t>(n));
-    auto raw = cols.pointers();
     const double* f = Ft.data();
     const auto o = line_options(std::nan(""), tolerance, strain_limit);
+    std::vector<critical_state<double>> out;
     {
       py::gil_scoped_release release;
-      std::vector<critical_state<double>> out;
       line_at(s, f, n, errors, o, out);
-      for (std::size_t i = 0; i < n; ++i) raw.put(i, out[i]);
     }
-    return cols.as_dict();
+    return state_columns(out);
   }, py::arg("params"), py::arg("Ft"), py::arg("errors") = 0, py::arg("tolerance") = std::nan(""),
      py::arg("strain_limit") = std::numeric_limits<double>::infinity());
 
@@ -140,37 +178,7 @@ void bind_seta(py::module_& m) {
       py::gil_scoped_release release;
       r = critical_line(s, options);
     }
-    const auto n = static_cast<py::ssize_t>(r.points.size());
-    py::array_t<double> Ft(n), Fn(n), beta(n), rj(n), rb(n), mz(n), mza(n), mst(n);
-    py::array_t<std::int32_t> tpb(n), tps(n), branch(n), status(n);
-    for (py::ssize_t i = 0; i < n; ++i) {
-      const auto& p = r.points[static_cast<std::size_t>(i)];
-      status.mutable_data()[i] = static_cast<std::int32_t>(p.status);
-      Ft.mutable_data()[i] = p.Ft;
-      Fn.mutable_data()[i] = p.Fn;
-      beta.mutable_data()[i] = p.theta_joint;
-      rj.mutable_data()[i] = p.theta_rate_joint;
-      rb.mutable_data()[i] = p.theta_rate_base;
-      tpb.mutable_data()[i] = p.turning_points_beam;
-      tps.mutable_data()[i] = p.turning_points_spatula;
-      branch.mutable_data()[i] = p.branch;
-      mz.mutable_data()[i] = p.min_z;
-      mza.mutable_data()[i] = p.min_z_at;
-      mst.mutable_data()[i] = p.max_axial_strain;
-    }
-    py::dict d;
-    d["Ft"] = Ft;
-    d["Fn"] = Fn;
-    d["theta_joint"] = beta;
-    d["theta_rate_joint"] = rj;
-    d["theta_rate_base"] = rb;
-    d["turning_points_beam"] = tpb;
-    d["turning_points_spatula"] = tps;
-    d["branch"] = branch;
-    d["status"] = status;
-    d["min_z"] = mz;
-    d["min_z_at"] = mza;
-    d["max_axial_strain"] = mst;
+    py::dict d = columns(r.points.data(), r.points.size(), line_node_fields());
     d["folds"] = py::cast(r.folds);
     d["end"] = static_cast<int>(r.end);
     d["natural_Fn"] = r.natural.Fn;
@@ -196,20 +204,7 @@ void bind_seta(py::module_& m) {
         critical_line_at(s, &Ft, 1, &r, lo);
       }
     }
-    py::dict d;
-    d["Ft"] = r.Ft;
-    d["Fn"] = r.Fn;
-    d["theta_joint"] = r.theta_joint;
-    d["status"] = static_cast<int>(r.status);
-    d["iterations"] = r.iterations;
-    d["theta_rate_joint"] = r.theta_rate_joint;
-    d["theta_rate_base"] = r.theta_rate_base;
-    d["turning_points_beam"] = r.turning_points_beam;
-    d["turning_points_spatula"] = r.turning_points_spatula;
-    d["min_z"] = r.min_z;
-    d["min_z_at"] = r.min_z_at;
-    d["max_axial_strain"] = r.max_axial_strain;
-    return d;
+    return r;
   }, py::arg("params"), py::arg("Ft"), py::arg("Fn") = std::nan(""), py::arg("theta_joint") = std::nan(""),
      py::arg("theta_rate_joint") = std::nan(""), py::arg("theta_rate_base") = std::nan(""),
      py::arg("tolerance") = std::nan(""), py::arg("max_iterations") = 40,
@@ -223,33 +218,7 @@ void bind_seta(py::module_& m) {
       py::gil_scoped_release release;
       c = characteristics(s, o);
     }
-    py::dict d;
-    d["fn0"] = c.fn0;
-    d["slope_k"] = c.slope_k;
-    d["min_fn"] = c.min_fn;
-    d["ft_at_min_fn"] = c.ft_at_min_fn;
-    d["min_fn_interior"] = c.min_fn_interior;
-    d["min_status"] = static_cast<int>(c.min_status);
-    d["slope_at_min_fn"] = c.slope_at_min_fn;
-    d["max_pull_off"] = c.max_pull_off;
-    d["ft_max"] = c.ft_max;
-    d["ft_at_line_end"] = c.ft_at_line_end;
-    d["fn_at_line_end"] = c.fn_at_line_end;
-    d["sticky_at_rest"] = c.sticky_at_rest;
-    d["end"] = static_cast<int>(c.end);
-    d["folds"] = py::cast(c.folds);
-    d["small_fn0"] = c.small.fn0;
-    d["small_slope_k"] = c.small.slope_k;
-    d["small_contact_length"] = c.small.contact_length;
-    d["small_non_sticky"] = c.small.non_sticky;
-    d["admissible_to_end"] = c.admissible_to_end;
-    d["admissible_end_ft"] = c.admissible_end_ft;
-    d["admissible_end_fn"] = c.admissible_end_fn;
-    d["slope_at_zero"] = c.slope_at_zero;
-    d["paper_k"] = c.paper_k;
-    d["max_pull_off_is_bound"] = c.max_pull_off_is_bound;
-    d["max_pull_off_bound"] = c.max_pull_off_bound;
-    return d;
+    return c;
   }, py::arg("params"), py::arg("ft_end") = std::nan(""),
      py::arg("strain_limit") = std::numeric_limits<double>::infinity());
 
@@ -262,22 +231,19 @@ void bind_seta(py::module_& m) {
       throw std::invalid_argument("gecko._core: designs must be a flat array of 9 numbers per design");
     const auto nd = static_cast<std::size_t>(designs.size() / 9);
     const auto m_ft = static_cast<std::size_t>(Ft.size());
-    state_columns cols(static_cast<py::ssize_t>(nd * m_ft));
-    auto raw = cols.pointers();
     const double* p = designs.data();
     const double* f = Ft.data();
+    std::vector<critical_state<double>> out(nd * m_ft);
     {
       py::gil_scoped_release release;
       std::vector<TwoLevelSeta<double>> ds(nd);
       for (std::size_t i = 0; i < nd; ++i) ds[i] = design_from(p + 9 * i);
-      std::vector<critical_state<double>> out(nd * m_ft);
       const auto o = line_options(std::nan(""), tolerance, strain_limit);
       const unsigned nt = threads > 0 ? static_cast<unsigned>(threads) : 1u;
       if (errors == static_cast<int>(on_error::nan)) critical_line_batch(ds.data(), nd, f, m_ft, out.data(), nt, o, nan_policy());
       else critical_line_batch(ds.data(), nd, f, m_ft, out.data(), nt, o, default_policy());
-      for (std::size_t i = 0; i < out.size(); ++i) raw.put(i, out[i]);
     }
-    return cols.as_dict();
+    return state_columns(out);
   }, py::arg("designs"), py::arg("Ft"), py::arg("errors") = 0, py::arg("threads") = 1,
      py::arg("tolerance") = std::nan(""), py::arg("strain_limit") = std::numeric_limits<double>::infinity());
 
@@ -292,88 +258,19 @@ void bind_seta(py::module_& m) {
       throw std::invalid_argument("gecko._core: depth must be 0 (closed forms), 1 (natural state) or 2 (line)");
     const auto how = static_cast<characteristics_depth>(depth);
     const auto nd = static_cast<std::size_t>(designs.size() / 9);
-    const auto n = static_cast<py::ssize_t>(nd);
-    py::array_t<double> fn0(n), slope_k(n), min_fn(n), ft_at_min_fn(n), max_pull_off(n), ftmax(n),
-        ft_end_(n), fn_end(n), small_fn0(n), small_k(n), small_lc(n), adm_ft(n), adm_fn(n), k0(n), pk(n),
-        pbound(n);
-    py::array_t<std::int8_t> sticky(n), small_ns(n), interior(n), adm_all(n), is_bound(n);
-    double* p_adm_ft = adm_ft.mutable_data();
-    double* p_adm_fn = adm_fn.mutable_data();
-    std::int8_t* p_adm_all = adm_all.mutable_data();
-    double* p_k0 = k0.mutable_data();
-    double* p_pk = pk.mutable_data();
-    double* p_pbound = pbound.mutable_data();
-    std::int8_t* p_is_bound = is_bound.mutable_data();
-    py::array_t<std::int32_t> status(n), end(n), folds(n);
-    struct raw_t {
-      double *fn0, *k, *min_fn, *ft_min, *pull, *ftmax, *ft_end, *fn_end, *sfn0, *sk, *slc;
-      std::int8_t *sticky, *sns, *interior;
-      std::int32_t *status, *end, *folds;
-    } r{fn0.mutable_data(), slope_k.mutable_data(), min_fn.mutable_data(), ft_at_min_fn.mutable_data(),
-        max_pull_off.mutable_data(), ftmax.mutable_data(), ft_end_.mutable_data(), fn_end.mutable_data(),
-        small_fn0.mutable_data(), small_k.mutable_data(), small_lc.mutable_data(), sticky.mutable_data(),
-        small_ns.mutable_data(), interior.mutable_data(), status.mutable_data(), end.mutable_data(),
-        folds.mutable_data()};
     const double* p = designs.data();
+    std::vector<design_characteristics<double>> out(nd);
     {
       py::gil_scoped_release release;
       std::vector<TwoLevelSeta<double>> ds(nd);
       for (std::size_t i = 0; i < nd; ++i) ds[i] = design_from(p + 9 * i);
-      std::vector<design_characteristics<double>> out(nd);
       characteristics_batch(ds.data(), nd, how, out.data(), threads > 0 ? static_cast<unsigned>(threads) : 1u);
-      for (std::size_t i = 0; i < nd; ++i) {
-        const auto& c = out[i];
-        r.fn0[i] = c.fn0;
-        r.k[i] = c.slope_k;
-        r.min_fn[i] = c.min_fn;
-        r.ft_min[i] = c.ft_at_min_fn;
-        r.pull[i] = c.max_pull_off;
-        r.ftmax[i] = c.ft_max;
-        r.ft_end[i] = c.ft_at_line_end;
-        r.fn_end[i] = c.fn_at_line_end;
-        r.sfn0[i] = c.small.fn0;
-        r.sk[i] = c.small.slope_k;
-        r.slc[i] = c.small.contact_length;
-        r.sticky[i] = static_cast<std::int8_t>(c.sticky_at_rest);
-        r.sns[i] = static_cast<std::int8_t>(c.small.non_sticky);
-        r.interior[i] = static_cast<std::int8_t>(c.min_fn_interior);
-        r.status[i] = static_cast<std::int32_t>(c.status);
-        r.end[i] = how == characteristics_depth::whole_line ? static_cast<std::int32_t>(c.end) : -1;
-        r.folds[i] = c.folds;
-        p_adm_ft[i] = c.admissible_end_ft;
-        p_adm_fn[i] = c.admissible_end_fn;
-        p_adm_all[i] = static_cast<std::int8_t>(c.admissible_to_end);
-        p_k0[i] = c.slope_at_zero;
-        p_pk[i] = c.paper_k;
-        p_pbound[i] = c.max_pull_off_bound;
-        p_is_bound[i] = static_cast<std::int8_t>(c.max_pull_off_is_bound);
-      }
     }
-    py::dict d;
-    d["status"] = status;
-    d["fn0"] = fn0;
-    d["slope_k"] = slope_k;
-    d["sticky_at_rest"] = sticky;
-    d["min_fn"] = min_fn;
-    d["ft_at_min_fn"] = ft_at_min_fn;
-    d["min_fn_interior"] = interior;
-    d["max_pull_off"] = max_pull_off;
-    d["ft_max"] = ftmax;
-    d["ft_at_line_end"] = ft_end_;
-    d["fn_at_line_end"] = fn_end;
-    d["line_end"] = end;
-    d["folds"] = folds;
-    d["small_fn0"] = small_fn0;
-    d["small_slope_k"] = small_k;
-    d["small_contact_length"] = small_lc;
-    d["small_non_sticky"] = small_ns;
-    d["admissible_end_ft"] = adm_ft;
-    d["admissible_end_fn"] = adm_fn;
-    d["admissible_to_end"] = adm_all;
-    d["slope_at_zero"] = k0;
-    d["paper_k"] = pk;
-    d["max_pull_off_bound"] = pbound;
-    d["max_pull_off_is_bound"] = is_bound;
+    py::dict d = columns(out.data(), nd, design_characteristics_fields());
+    if (how != characteristics_depth::whole_line) {  // no line followed: no line end to report
+      auto end = d["line_end"].cast<py::array_t<std::int32_t>>();
+      std::fill(end.mutable_data(), end.mutable_data() + nd, std::int32_t(-1));
+    }
     return d;
   }, py::arg("designs"), py::arg("depth") = 2, py::arg("threads") = 1);
 
@@ -441,28 +338,19 @@ void bind_seta(py::module_& m) {
     SingleFiber<double> f;
     f.EI = q[0]; f.EA = q[1]; f.l = q[2]; f.alpha = q[3]; f.w = q[4];
     const auto n = static_cast<std::size_t>(Ft.size());
-    state_columns cols(static_cast<py::ssize_t>(n));
-    auto raw = cols.pointers();
     const double* ft = Ft.data();
+    std::vector<critical_state<double>> out(n);
     {
       py::gil_scoped_release release;
-      std::vector<critical_state<double>> out(n);
       const auto o = line_options(std::nan(""), tolerance);
       if (errors == static_cast<int>(on_error::nan)) critical_line_at(f, ft, n, out.data(), o, nan_policy());
       else critical_line_at(f, ft, n, out.data(), o, default_policy());
-      for (std::size_t i = 0; i < n; ++i) raw.put(i, out[i]);
     }
-    return cols.as_dict();
+    return state_columns(out);
   }, py::arg("params"), py::arg("Ft"), py::arg("errors") = 0, py::arg("tolerance") = std::nan(""));
 
   m.def("seta_small_deformation", [](const darray& params) {
-    const auto c = small_deformation(design_from(params));
-    py::dict d;
-    d["fn0"] = c.fn0;
-    d["slope_k"] = c.slope_k;
-    d["contact_length"] = c.contact_length;
-    d["non_sticky"] = c.non_sticky;
-    return d;
+    return small_deformation(design_from(params));
   }, py::arg("params"));
 
   m.def("kendall_fn", [](const darray& Ft, const darray& EA, const darray& w, int errors) {

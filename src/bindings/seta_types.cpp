@@ -4,6 +4,7 @@
 // lists the fields or the status codes again.
 #include <cmath>
 #include <cstddef>
+#include <initializer_list>
 #include <limits>
 #include <string>
 #include <vector>
@@ -118,49 +119,52 @@ void bind_design(py::module_& m) {
   cls.attr("__hash__") = py::none();
 }
 
+// One IntEnum from its members (name, value, optional doc): the one recipe of every status enum.
+template <class E>
+struct enum_member {
+  const char* name;
+  E value;
+  const char* doc = nullptr;
+};
+
+template <class E>
+void bind_int_enum(py::module_& m, const char* name, const char* doc, std::initializer_list<enum_member<E>> members) {
+  py::native_enum<E> e(m, name, "enum.IntEnum", doc);
+  for (const auto& v : members) e.value(v.name, v.value, v.doc);
+  e.finalize();
+}
+
 void bind_enums(py::module_& m) {
-  py::native_enum<critical_status>(m, "CriticalStatus", "enum.IntEnum",
-                                   "Status of a critical state (gecko/seta/solve_critical.hpp).")
-      .value("converged", critical_status::converged)
-      .value("not_converged", critical_status::not_converged, "Newton did not converge from its guess")
-      .value("no_critical_state", critical_status::no_critical_state,
-             "the line followed from Ft = 0 does not reach this Ft")
-      .value("unsupported_state", critical_status::unsupported_state, "the state leaves the model's forms")
-      .value("singular", critical_status::singular, "singular Jacobian: Ft at a fold of the line")
-      .value("invalid_input", critical_status::invalid_input, "bad input under errors='nan'")
-      .value("not_reached", critical_status::not_reached,
-             "the followed line was given up before this Ft: unknown, not 'none'")
-      .value("inadmissible", critical_status::inadmissible,
-             "solves the equations, but the seta crosses the substrate or the strain limit")
-      .finalize();
-  py::native_enum<line_end>(m, "LineEnd", "enum.IntEnum", "Why a followed critical line stopped.")
-      .value("reached_ft_end", line_end::reached_ft_end)
-      .value("reached_ft_max", line_end::reached_ft_max)
-      .value("turned_back", line_end::turned_back)
-      .value("no_convergence", line_end::no_convergence)
-      .value("unsupported_state", line_end::unsupported_state)
-      .value("max_points", line_end::max_points)
-      .value("no_natural_state", line_end::no_natural_state)
-      .value("stalled", line_end::stalled)
-      .finalize();
-  py::native_enum<minimum_status>(m, "MinimumStatus", "enum.IntEnum",
-                                  "Where the most tensile critical Fn lies and how far it is established.")
-      .value("stationary", minimum_status::stationary)
-      .value("range_start", minimum_status::range_start)
-      .value("range_end", minimum_status::range_end)
-      .value("line_incomplete", minimum_status::line_incomplete)
-      .value("not_certified", minimum_status::not_certified)
-      .value("admissible_end", minimum_status::admissible_end)
-      .value("no_admissible_state", minimum_status::no_admissible_state)
-      .finalize();
-  py::native_enum<fit_status>(m, "FitStatus", "enum.IntEnum", "Outcome of a Levenberg-Marquardt fit.")
-      .value("converged", fit_status::converged)
-      .value("max_iterations", fit_status::max_iterations)
-      .value("singular", fit_status::singular)
-      .value("not_identifiable", fit_status::not_identifiable)
-      .value("no_progress", fit_status::no_progress)
-      .value("non_finite", fit_status::non_finite)
-      .finalize();
+  using cs = critical_status;
+  bind_int_enum<cs>(m, "CriticalStatus", "Status of a critical state (gecko/seta/solve_critical.hpp).", {
+      {"converged", cs::converged},
+      {"not_converged", cs::not_converged, "Newton did not converge from its guess"},
+      {"no_critical_state", cs::no_critical_state, "the line followed from Ft = 0 does not reach this Ft"},
+      {"unsupported_state", cs::unsupported_state, "the state leaves the model's forms"},
+      {"singular", cs::singular, "singular Jacobian: Ft at a fold of the line"},
+      {"invalid_input", cs::invalid_input, "bad input under errors='nan'"},
+      {"not_reached", cs::not_reached, "the followed line was given up before this Ft: unknown, not 'none'"},
+      {"inadmissible", cs::inadmissible, "solves the equations, but the seta crosses the substrate or the strain limit"},
+  });
+  using le = line_end;
+  bind_int_enum<le>(m, "LineEnd", "Why a followed critical line stopped.", {
+      {"reached_ft_end", le::reached_ft_end}, {"reached_ft_max", le::reached_ft_max},
+      {"turned_back", le::turned_back}, {"no_convergence", le::no_convergence},
+      {"unsupported_state", le::unsupported_state}, {"max_points", le::max_points},
+      {"no_natural_state", le::no_natural_state}, {"stalled", le::stalled},
+  });
+  using ms = minimum_status;
+  bind_int_enum<ms>(m, "MinimumStatus", "Where the most tensile critical Fn lies and how far it is established.", {
+      {"stationary", ms::stationary}, {"range_start", ms::range_start}, {"range_end", ms::range_end},
+      {"line_incomplete", ms::line_incomplete}, {"not_certified", ms::not_certified},
+      {"admissible_end", ms::admissible_end}, {"no_admissible_state", ms::no_admissible_state},
+  });
+  using fs = fit_status;
+  bind_int_enum<fs>(m, "FitStatus", "Outcome of a Levenberg-Marquardt fit.", {
+      {"converged", fs::converged}, {"max_iterations", fs::max_iterations}, {"singular", fs::singular},
+      {"not_identifiable", fs::not_identifiable}, {"no_progress", fs::no_progress},
+      {"non_finite", fs::non_finite},
+  });
 }
 
 }  // namespace

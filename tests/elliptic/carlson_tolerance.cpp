@@ -24,6 +24,13 @@ TEST_CASE("carlson_tolerance: constexpr roots match pow") {
   CHECK(carlson_tolerance<double, 0>::rd ==
         Approx(double(std::pow(r53 / (2 * 0.05305240792088293L), 1.0L / 12))).epsilon(1e-15));
   CHECK(carlson_tolerance<double, 12>::rd == 0.5);
+  // R_F threshold for the degree-11 series of the Legendre F kernel: (r / (2 C12))^(1/12),
+  // C12 = 0.1235894775390625 (degree-12 terms at |E2| <= 1.5 t^2, |E3| <= t^3/4), cap 1/2
+  CHECK(carlson_tolerance<double, 0>::rf11 ==
+        Approx(double(std::pow(r53 / (2 * 0.12358947753906249L), 1.0L / 12))).epsilon(1e-15));
+  CHECK(carlson_tolerance<double, 0>::rf11 == Approx(0.0526).epsilon(1e-3));
+  CHECK(carlson_tolerance<double, 12>::rf11 == 0.5);
+  CHECK(carlson_tolerance<double, 10>::rf11 > carlson_tolerance<double, 30>::rf11);
   // R_J keeps Carlson's degree-5 series: (r/4)^(1/6)
   CHECK(carlson_tolerance<double, 0>::rj == Approx(double(std::pow(r53 / 4, 1.0L / 6))).epsilon(1e-15));
   CHECK(carlson_tolerance<double, 0>::agm == Approx(double(2 * std::sqrt(r53))).epsilon(1e-15));

@@ -2,6 +2,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "gecko/friction/spatula_simulation.hpp"
@@ -153,4 +155,177 @@ TEST_CASE("simulate_spatulae: bad input", "[friction][simulation][errors]") {
   CHECK_THROWS_WITH(gecko::simulate_spatulae(s.p, [](double) { return 0.0; }, s.V, o),
                     Catch::Contains("G = 0"));
   CHECK(std::isnan(gecko::simulate_spatulae(s.p, s.law, -1.0, o, gecko::policies::nan_policy()).mean_par));
+}
+
+// ---- populations: each spatula its own length, stiffness and G0 --------------------------------
+
+namespace {
+
+// n standard normal quantiles at the midpoints of n equal-probability cells, in a scrambled
+// order (so that neighbouring spatulae differ): a deterministic stand-in for a normal sample.
+std::vector<double> normal_scores(std::size_t n) {
+  std::vector<double> z(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double q = (double((i * 7919) % n) + 0.5) / double(n);
+    // Inverse of the normal CDF by bisection on erfc (plenty for test data).
+    double lo = -10, hi = 10;
+    for (int it = 0; it < 200; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (0.5 * std::erfc(-mid / std::sqrt(2.0)) < q ? lo : hi) = mid;
+    }
+    z[i] = 0.5 * (lo + hi);
+  }
+  return z;
+}
+
+// Lognormal factors of mean 1 and log-width sigma from the scores z.
+std::vector<double> lognormal(const std::vector<double>& z, double sigma, std::size_t shift) {
+  std::vector<double> v(z.size());
+  for (std::size_t i = 0; i < z.size(); ++i)
+    v[i] = std::exp(sigma * z[(i + shift) % z.size()] - sigma * sigma / 2);
+  return v;
+}
+
+}  // namespace
+
+TEST_CASE("simulate_spatulae: a degenerate population is the single population exactly",
+          "[friction][simulation][population]") {
+  const scene s;
+  gecko::spatula_simulation_options<double> o;
+  o.spatulae = 300;
+  o.duration = 40;
+  o.t_off = s.t_off;
+  o.samples = 50;
+  for (auto law : {gecko::resticking::fixed, gecko::resticking::exponential}) {
+    o.law = law;
+    const auto ref = gecko::simulate_spatulae(s.p, s.law, s.V, o);
+    gecko::spatula_population<double> ones;
+    ones.length.assign(o.spatulae, 1.0);
+    ones.stiffness.assign(o.spatulae, 1.0);
+    ones.G0.assign(o.spatulae, 1.0);
+    const auto r = gecko::simulate_spatulae(s.p, s.law, s.V, o, ones);
+    CHECK(r.mean_par == ref.mean_par);
+    CHECK(r.mean_perp == ref.mean_perp);
+    CHECK(r.std_par == ref.std_par);
+    CHECK(r.F_par == ref.F_par);
+    CHECK(r.F_perp == ref.F_perp);
+    CHECK(r.detachments == ref.detachments);
+    CHECK(r.mean_field_par == Approx(ref.mean_field_par).epsilon(1e-14));
+    CHECK(r.population_perp == Approx(ref.population_perp).epsilon(1e-14));
+    // Equal factors other than 1 (powers of 2 and a 3 that both sides apply the same way) are
+    // the single population with K, f, G and t_off scaled as the header says.
+    gecko::spatula_population<double> eq;
+    eq.length.assign(o.spatulae, 2.0);     // K / 8, t_off * 4
+    eq.stiffness.assign(o.spatulae, 4.0);  // K * 4: K / 2 in all
+    eq.G0.assign(o.spatulae, 3.0);
+    auto p2 = s.p;
+    p2.K = 0.5 * s.p.K;
+    p2.f_par1 = 0.5 * s.p.f_par1;
+    p2.f_perp1 = 0.5 * s.p.f_perp1;
+    auto o2 = o;
+    o2.t_off = 4 * o.t_off;
+    const auto law3 = [&s](double V) { return 3.0 * s.law(V); };
+    const auto a = gecko::simulate_spatulae(s.p, s.law, s.V, o, eq);
+    const auto b = gecko::simulate_spatulae(p2, law3, s.V, o2);
+    CHECK(a.mean_par == b.mean_par);
+    CHECK(a.F_perp == b.F_perp);
+    CHECK(a.detachments == b.detachments);
+    // With every spatula equal, the mean field at the mean parameters is the population's.
+    CHECK(a.mean_field_par == Approx(a.population_par).epsilon(1e-13));
+  }
+}
+
+TEST_CASE("simulate_spatulae: a population converges to its averaged mean field",
+          "[friction][simulation][population]") {
+  const scene s;
+  const std::size_t M = 256;
+  const auto z = normal_scores(M);
+  gecko::spatula_population<double> pop;
+  pop.length = lognormal(z, 0.05, 0);
+  pop.stiffness = lognormal(z, 0.10, 85);
+  pop.G0 = lognormal(z, 0.10, 170);
+  // The population average, independently: eqs 9-10 with t_off (steady_sliding) per spatula.
+  double pp = 0, pq = 0;
+  for (std::size_t i = 0; i < M; ++i) {
+    const double l = pop.length[i], c = pop.stiffness[i] / (l * l * l);
+    auto p = s.p;
+    p.N = s.p.N / double(M);
+    p.K = c * s.p.K;
+    p.f_par1 = c * s.p.f_par1;
+    p.f_perp1 = c * s.p.f_perp1;
+    const double g = pop.G0[i];
+    const auto f = gecko::steady_sliding(p, [&](double V) { return g * s.law(V); }, s.V,
+                                         l * l * s.t_off);
+    pp += f.F_par;
+    pq += f.F_perp;
+  }
+  gecko::spatula_simulation_options<double> o;
+  o.spatulae = M;
+  o.t_off = s.t_off;
+  o.samples = 8;
+  const auto mf = gecko::steady_sliding(s.p, s.law, s.V, s.t_off);
+  const double P = mf.t_on + s.t_off;
+  double last_bound = 0;
+  for (double periods : {10.3, 103.7}) {
+    o.duration = periods * P;
+    for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+      o.seed = seed;
+      const auto r = gecko::simulate_spatulae(s.p, s.law, s.V, o, pop);
+      CHECK(r.population_par == Approx(pp).epsilon(1e-13));
+      CHECK(r.population_perp == Approx(pq).epsilon(1e-13));
+      // The bound of the header comment holds for every seed (plus rounding of the sums).
+      CHECK(std::abs(r.mean_par - r.population_par) <= r.bound_par + 1e-12 * std::abs(pp));
+      CHECK(std::abs(r.mean_perp - r.population_perp) <= r.bound_perp + 1e-12 * std::abs(pq));
+      // It is the range of one spatula over twice the number of periods: ~ 1 / duration.
+      CHECK(r.bound_par < 2.0 / periods * pp);
+      last_bound = r.bound_par;
+    }
+  }
+  CHECK(last_bound < 0.02 * pp);
+}
+
+TEST_CASE("simulate_spatulae: the mean field at the mean parameters is off by O(sigma^2)",
+          "[friction][simulation][population]") {
+  // Eqs 9-10 are nonlinear in K and G (F ~ sqrt(K G) at f_par1 = 0), so averaging over the
+  // population is not evaluating at the mean: the gap is second order in the width.
+  const scene s;
+  const std::size_t M = 400;
+  const auto z = normal_scores(M);
+  gecko::spatula_simulation_options<double> o;
+  o.spatulae = M;
+  o.t_off = s.t_off;
+  o.duration = 1;
+  o.samples = 1;
+  double gap[2];
+  for (int k = 0; k < 2; ++k) {
+    const double sigma = k == 0 ? 0.1 : 0.05;
+    gecko::spatula_population<double> pop;
+    pop.stiffness = lognormal(z, sigma, 0);
+    pop.G0 = lognormal(z, sigma, 131);
+    const auto r = gecko::simulate_spatulae(s.p, s.law, s.V, o, pop);
+    gap[k] = r.population_par - r.mean_field_par;
+    CHECK(std::abs(gap[k]) < 4 * sigma * sigma * r.mean_field_par);
+  }
+  CHECK(gap[0] / gap[1] == Approx(4.0).epsilon(0.05));
+}
+
+TEST_CASE("simulate_spatulae: bad population", "[friction][simulation][population][errors]") {
+  const scene s;
+  gecko::spatula_simulation_options<double> o;
+  o.spatulae = 4;
+  gecko::spatula_population<double> pop;
+  pop.G0 = {1, 1, 1};
+  CHECK_THROWS_WITH(gecko::simulate_spatulae(s.p, s.law, s.V, o, pop),
+                    Catch::Contains("population.G0.size() = 3"));
+  pop.G0.clear();
+  pop.stiffness = {1, 1, -1, 1};
+  CHECK_THROWS_WITH(gecko::simulate_spatulae(s.p, s.law, s.V, o, pop),
+                    Catch::Contains("population.stiffness[2] = -1") &&
+                        Catch::Contains("0 < factor < inf"));
+  pop.stiffness.clear();
+  pop.length = {1, 1, 1, std::numeric_limits<double>::infinity()};
+  CHECK_THROWS_WITH(gecko::simulate_spatulae(s.p, s.law, s.V, o, pop),
+                    Catch::Contains("population.length[3] = inf"));
+  CHECK(std::isnan(
+      gecko::simulate_spatulae(s.p, s.law, s.V, o, pop, gecko::policies::nan_policy()).mean_par));
 }

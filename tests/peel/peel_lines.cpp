@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "gecko/peel.hpp"
+#include "gecko/peel/small_deformation.hpp"  // the deprecated forwarding header, tested below
 
 TEMPLATE_TEST_CASE("Kendall and Rivlin lines satisfy eq 17", "[peel]", float, double, long double) {
   using T = TestType;
@@ -33,4 +34,13 @@ TEST_CASE("peel lines: bad input names the parameter", "[peel][errors]") {
   CHECK_THROWS_WITH(gecko::kendall_fn(1.0, 50.0, 0.0), Catch::Contains("w"));
   CHECK_THROWS_WITH(gecko::rivlin_fn(-0.6, 1.0), Catch::Contains("Ft") && Catch::Contains("-w/2"));
   CHECK(std::isnan(gecko::rivlin_fn(-0.6, 1.0, gecko::policies::nan_policy())));
+}
+
+// The small-deformation formulas moved to gecko/seta/small_deformation.hpp (they are the seta's,
+// paper eqs 7 and 18-22); code written against gecko 0.1 includes the old peel path or
+// gecko/peel.hpp and must still compile and get the same functions.
+TEST_CASE("deprecated peel path still provides the small-deformation formulas", "[peel][small_deformation]") {
+  const gecko::TwoLevelSeta<double> s;
+  const auto r = gecko::small_deformation(s);
+  CHECK(gecko::small_deformation_fn(s, 2.0) == r.fn0 + r.slope_k * 2.0);
 }

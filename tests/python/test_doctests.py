@@ -16,6 +16,8 @@ MODULES = [
     ("gecko.elliptic", None),
     ("gecko.seta", None),
     ("gecko.friction", None),
+    ("gecko.friction_hierarchy", None),
+    ("gecko.plot_hierarchy", "matplotlib"),
     ("gecko.design_sweep", "pandas"),
     ("gecko.designs", "pandas"),
     ("gecko.optimize", "scipy"),

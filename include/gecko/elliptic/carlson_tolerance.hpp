@@ -14,6 +14,12 @@
 //                 already far more accurate than asked).
 //                 (Carlson's degree-7 series would need (3r)^(1/8): 0.0116 for double, against
 //                 t_F = 0.113 here, i.e. about 1.6 duplication steps more.)
+//   max|X| < t_F11 for the degree-11 R_F series of the Legendre F kernel (gecko/elliptic/ellint_f.hpp):
+//                 the terms of degree 12 (E2^6, E2^3 E3^2, E3^4) have |coefficients| times the bounds
+//                 |E2| <= 3 t^2 / 2, |E3| <= t^3 / 4 summing to C12 t^12, C12 = 0.12359
+//                 (coefficients as in gecko/elliptic/carlson_rf.hpp); t_F11 solves 2 C12 t^12 = r
+//                 (the factor 2 covers the later degrees, each smaller by about t), capped at 1/2:
+//                 0.0526 for double.
 //   max|X| < t_D  for R_D (degree-11 series in S = X + Y, P = XY, gecko/elliptic/carlson_rd.hpp):
 //                 the terms of degree N have absolute coefficients (in X, Y monomials) summing
 //                 to C_N, slowly decreasing from 0.114 (N = 6) to C_12 = 0.0531
@@ -75,6 +81,10 @@ struct carlson_tolerance {
   static constexpr long double rf_raw =
       constexpr_sqrt(constexpr_sqrt(constexpr_sqrt(constexpr_sqrt(160 * r))) / 1.5L);
   static constexpr T rf = static_cast<T>(rf_raw < 0.5L ? rf_raw : 0.5L);
+  // R_F, degree-11 series: (r / (2 * 0.12358947753906249))^(1/12), at most 1/2.
+  static constexpr long double rf11_raw =
+      constexpr_sqrt(constexpr_sqrt(constexpr_cbrt(r / (2 * 0.12358947753906249L))));
+  static constexpr T rf11 = static_cast<T>(rf11_raw < 0.5L ? rf11_raw : 0.5L);
   // Arithmetic-geometric mean (gecko/elliptic/ellint_k.hpp): stop at |a - b| <= 2 sqrt(r) a.
   static constexpr T agm = static_cast<T>(2 * constexpr_sqrt(r));
   // R_D (degree-11 series): (r / (2 * 0.05305240792088293))^(1/12), at most 1/2.

@@ -51,7 +51,7 @@ T viscoelastic_detachment_energy(T V, T G0, T V_star, T n, const Policy& = Polic
   if (!detail::check_positive<T, Policy>(f, "V_star", V_star, "0 < V_star < inf")) return nan;
   if (!detail::check_positive<T, Policy>(f, "n", n, "0 < n < inf")) return nan;
   if (!detail::check_velocity<T, Policy>(f, V)) return nan;
-  return G0 * (T(1) + pow(V / V_star, n));
+  return G0 * (T(1) + pow(V / V_star, n));  // paper 000 eq (7)
 }
 
 template <class T, class Policy = policies::default_policy>
@@ -62,7 +62,7 @@ T eyring_detachment_energy(T V, T G0, T V_star, const Policy& = Policy()) {
   if (!detail::check_positive<T, Policy>(f, "G0", G0, "0 < G0 < inf")) return nan;
   if (!detail::check_positive<T, Policy>(f, "V_star", V_star, "0 < V_star < inf")) return nan;
   if (!detail::check_velocity<T, Policy>(f, V)) return nan;
-  return G0 * asinh(V / V_star);
+  return G0 * asinh(V / V_star);  // paper 000 eq (8)
 }
 
 // The two laws as function objects (what steady_sliding, simulate_spatulae and the fit take).
@@ -78,7 +78,7 @@ struct eyring_detachment {
   T operator()(T V) const { return eyring_detachment_energy<T>(V, G0, V_star, Policy()); }
 };
 
-// A2.6, in the form without cancellation for either sign of f_par1.
+// Paper 000 eq (A2.6), in the form without cancellation for either sign of f_par1.
 template <class T, class Policy = policies::default_policy>
 T detachment_stretch(T K_par_par, T f_par1, T G, const Policy& = Policy()) {
   using std::isfinite;
@@ -107,7 +107,7 @@ T resonant_frequency(T D, T L, T E, T rho, const Policy& = Policy()) {
   if (!detail::check_positive<T, Policy>(f, "L", L, "0 < L < inf")) return nan;
   if (!detail::check_positive<T, Policy>(f, "E", E, "0 < E < inf")) return nan;
   if (!detail::check_positive<T, Policy>(f, "rho", rho, "0 < rho < inf")) return nan;
-  return T(0.14) * (D / (L * L)) * sqrt(E / rho);
+  return T(0.14) * (D / (L * L)) * sqrt(E / rho);  // paper 000 eq (4)
 }
 
 }  // namespace gecko

@@ -25,7 +25,7 @@ template <class T>
 void push_sample(force_trace_result<T>& r, const Eigen::Matrix<T, 2, 2>& K,
                  const displacement_path<T>& path, T time) {
   const Eigen::Matrix<T, 2, 1> d = path_at(path, time);
-  const Eigen::Matrix<T, 2, 1> f = K * d;
+  const Eigen::Matrix<T, 2, 1> f = K * d;  // f = K d, paper 000 eqs (1) and (11)
   r.t.push_back(time);
   r.d_par.push_back(d(0));
   r.d_perp.push_back(d(1));

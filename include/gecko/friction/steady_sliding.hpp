@@ -141,10 +141,10 @@ sliding_force<T> steady_sliding_imp(const char* function, const sliding_params<T
   const T Kqp = p.K(1, 0);
   const T f1 = p.f_par1;
   const T q = sqrt(f1 * f1 + T(2) * Kpp * G);
-  const T dd = f1 > T(0) ? T(2) * G / (f1 + q) : (q - f1) / Kpp;
+  const T dd = f1 > T(0) ? T(2) * G / (f1 + q) : (q - f1) / Kpp;  // paper 000 eq (A2.6)
   // Mean lateral force while attached, (f1 + q)/2, without cancellation for f1 < 0.
   const T mean_par = f1 >= T(0) ? (f1 + q) / T(2) : Kpp * G / (q - f1);
-  const T mean_perp = p.f_perp1 + Kqp * dd / T(2);
+  const T mean_perp = p.f_perp1 + Kqp * dd / T(2);  // paper 000 eqs (9)-(10) times the duty factor
   // Duty factor t_on / (t_on + t_off) = dd / (dd + V t_off): no division by V.
   T duty = T(1);
   if (t_off > T(0)) {
@@ -210,14 +210,14 @@ template <class T, class P>
 struct batch_law<T, viscoelastic_detachment<T, P>> {
   const viscoelastic_detachment<T, P>& law;
   bool valid() const { using std::isnan; return !isnan(law(T(0))); }
-  T operator()(T V) const { using std::pow; return law.G0 * (T(1) + pow(V / law.V_star, law.n)); }
+  T operator()(T V) const { using std::pow; return law.G0 * (T(1) + pow(V / law.V_star, law.n)); }  // paper 000 eq (7)
 };
 
 template <class T, class P>
 struct batch_law<T, eyring_detachment<T, P>> {
   const eyring_detachment<T, P>& law;
   bool valid() const { using std::isnan; return !isnan(law(T(0))); }
-  T operator()(T V) const { using std::asinh; return law.G0 * asinh(V / law.V_star); }
+  T operator()(T V) const { using std::asinh; return law.G0 * asinh(V / law.V_star); }  // paper 000 eq (8)
 };
 
 }  // namespace detail

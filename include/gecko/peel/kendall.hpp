@@ -31,6 +31,7 @@ inline T kendall_fn(T Ft, T EA, T w, const Policy& = Policy()) {
                               " <= Ft <= sqrt(2 EA w) = " + detail::format_value(hi);
     return raise_domain_error<T, Policy>(fn, "Ft", Ft, range.c_str());
   }
+  // Kendall's line, paper 001 eq (17): N + N^2/(2 EA) = Ft + w, solved for N = sqrt(Fn^2 + Ft^2).
   const T M = Ft + w;
   const T N = isinf(EA) ? M : 2 * M / (1 + sqrt(1 + 2 * M / EA));
   const T d = (N - Ft) * (N + Ft);

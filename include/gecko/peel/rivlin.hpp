@@ -16,7 +16,7 @@ inline T rivlin_fn(T Ft, T w, const Policy& = Policy()) {
   constexpr const char* fn = "gecko::rivlin_fn";
   if (!(w > 0) || isinf(w)) return raise_domain_error<T, Policy>(fn, "w", w, "0 < w < infinity");
   if (!(Ft >= -w / 2) || isinf(Ft)) return raise_domain_error<T, Policy>(fn, "Ft", Ft, "-w/2 <= Ft < infinity");
-  return -sqrt(w * (w + 2 * Ft));
+  return -sqrt(w * (w + 2 * Ft));  // Rivlin's line, paper 001 eq (17): sqrt(Fn^2 + Ft^2) = Ft + w
 }
 
 }  // namespace gecko

@@ -8,7 +8,7 @@
 //                   minimum, each refined to dFn/ds = 0 and its slope verified (see below)
 //   (Ft)max         sqrt(2 EA2 w), and Fn where the line ends there
 //   sticky at rest  (Fn)0 < 0
-// next to the small-deformation formulas (gecko/peel/small_deformation.hpp).
+// next to the small-deformation formulas (gecko/seta/small_deformation.hpp).
 //
 // Interior minima. Every segment between two traced nodes over which dFn/ds (the Fn component of
 // the line's unit tangent, exact at the converged nodes) goes from < 0 to > 0 holds a minimum of
@@ -37,9 +37,10 @@
 #include <limits>
 #include <vector>
 
-#include "gecko/peel/small_deformation.hpp"
+#include "gecko/seta/small_deformation.hpp"
 #include "gecko/seta/critical_line.hpp"
 #include "gecko/seta/detail/dual.hpp"
+#include "gecko/seta/extensibility.hpp"
 
 namespace gecko {
 
@@ -544,16 +545,13 @@ template <class T, class Policy = policies::default_policy>
 inline seta_characteristics<T> characteristics(const TwoLevelSeta<T>& seta,
                                                const critical_line_options<T>& options = critical_line_options<T>(),
                                                const Policy& = Policy()) {
-  using std::isinf;
   constexpr const char* fn = "gecko::characteristics";
   if (!detail::check_seta<T, Policy>(seta, fn)) return seta_characteristics<T>();
   if (options.ft_end == options.ft_end && !detail::check_ft<T, Policy>(options.ft_end, ft_max(seta), fn))
     return seta_characteristics<T>();
-  const bool e1 = !isinf(seta.EA1), e2 = !isinf(seta.EA2);
-  if (e1 && e2) return detail::characteristics_imp<Policy, true, true>(seta, options);
-  if (e1) return detail::characteristics_imp<Policy, true, false>(seta, options);
-  if (e2) return detail::characteristics_imp<Policy, false, true>(seta, options);
-  return detail::characteristics_imp<Policy, false, false>(seta, options);
+  return detail::visit_extensibility(seta, [&](auto E1, auto E2) {
+    return detail::characteristics_imp<Policy, decltype(E1)::value, decltype(E2)::value>(seta, options);
+  });
 }
 
 }  // namespace gecko

@@ -32,7 +32,7 @@
 
 #include "gecko/core/parallel.hpp"
 #include "gecko/core/policy.hpp"
-#include "gecko/peel/small_deformation.hpp"
+#include "gecko/seta/small_deformation.hpp"
 #include "gecko/seta/characteristics.hpp"
 #include "gecko/seta/solve_critical.hpp"
 #include "gecko/seta/two_level_seta.hpp"

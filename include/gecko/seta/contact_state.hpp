@@ -44,6 +44,7 @@
 #include "gecko/core/policy.hpp"
 #include "gecko/seta/admissibility.hpp"
 #include "gecko/seta/critical_residual.hpp"
+#include "gecko/seta/extensibility.hpp"
 #include "gecko/seta/two_level_seta.hpp"
 
 namespace gecko {
@@ -982,11 +983,10 @@ class contact_solver {
  public:
   explicit contact_solver(const TwoLevelSeta<T>& seta, const contact_options<T>& options = contact_options<T>())
       : seta_(seta), opt_(options) {
-    using std::isinf;
     valid_ = detail::check_seta<T, Policy>(seta, "gecko::contact_state");
     d_ = detail::make_seta_params(seta);
-    e1_ = !isinf(seta.EA1);
-    e2_ = !isinf(seta.EA2);
+    e1_ = detail::is_extensible(seta.EA1);
+    e2_ = detail::is_extensible(seta.EA2);
     ftmax_ = ft_max(seta);
   }
 
@@ -1029,10 +1029,9 @@ class contact_solver {
       return contact_status::invalid_input;
     }
     if (!detail::check_ft<T, Policy>(Ft, ftmax_, fn)) return contact_status::invalid_input;
-    if (e1_ && e2_) return detail::contact_solve<Policy, true, true>(d_, Fn, Ft, opt_, eq, n);
-    if (e1_) return detail::contact_solve<Policy, true, false>(d_, Fn, Ft, opt_, eq, n);
-    if (e2_) return detail::contact_solve<Policy, false, true>(d_, Fn, Ft, opt_, eq, n);
-    return detail::contact_solve<Policy, false, false>(d_, Fn, Ft, opt_, eq, n);
+    return detail::visit_extensibility(e1_, e2_, [&](auto E1, auto E2) {
+      return detail::contact_solve<Policy, decltype(E1)::value, decltype(E2)::value>(d_, Fn, Ft, opt_, eq, n);
+    });
   }
 
   TwoLevelSeta<T> seta_;

@@ -16,6 +16,7 @@
 #include "gecko/core/error.hpp"
 #include "gecko/core/policy.hpp"
 #include "gecko/seta/detail/seta_system.hpp"
+#include "gecko/seta/extensibility.hpp"
 #include "gecko/seta/two_level_seta.hpp"
 
 namespace gecko {
@@ -56,16 +57,14 @@ template <class T, class Policy = policies::default_policy>
 inline critical_equations_result<T> critical_equations(const TwoLevelSeta<T>& seta, T Ft, T Fn, T theta_joint,
                                                        T theta_rate_joint, T theta_rate_base,
                                                        const Policy& = Policy()) {
-  using std::isinf;
   constexpr const char* fn = "gecko::critical_equations";
   if (!detail::check_seta<T, Policy>(seta, fn) || !detail::check_ft<T, Policy>(Ft, ft_max(seta), fn))
     return critical_equations_result<T>();
   const auto d = detail::make_seta_params(seta);
-  const bool e1 = !isinf(seta.EA1), e2 = !isinf(seta.EA2);
-  if (e1 && e2) return detail::critical_equations_imp<Policy, true, true>(d, Ft, Fn, theta_joint, theta_rate_joint, theta_rate_base);
-  if (e1) return detail::critical_equations_imp<Policy, true, false>(d, Ft, Fn, theta_joint, theta_rate_joint, theta_rate_base);
-  if (e2) return detail::critical_equations_imp<Policy, false, true>(d, Ft, Fn, theta_joint, theta_rate_joint, theta_rate_base);
-  return detail::critical_equations_imp<Policy, false, false>(d, Ft, Fn, theta_joint, theta_rate_joint, theta_rate_base);
+  return detail::visit_extensibility(seta, [&](auto E1, auto E2) {
+    return detail::critical_equations_imp<Policy, decltype(E1)::value, decltype(E2)::value>(
+        d, Ft, Fn, theta_joint, theta_rate_joint, theta_rate_base);
+  });
 }
 
 }  // namespace gecko

@@ -20,6 +20,7 @@
 #include "gecko/core/policy.hpp"
 #include "gecko/seta/detail/continuation.hpp"
 #include "gecko/seta/detail/seta_system.hpp"
+#include "gecko/seta/extensibility.hpp"
 #include "gecko/seta/solve_critical.hpp"
 #include "gecko/seta/two_level_seta.hpp"
 
@@ -465,7 +466,6 @@ template <class T, class Policy = policies::default_policy>
 inline critical_line_result<T> critical_line(const TwoLevelSeta<T>& seta,
                                              const critical_line_options<T>& options = critical_line_options<T>(),
                                              const Policy& = Policy()) {
-  using std::isinf;
   constexpr const char* fn = "gecko::critical_line";
   if (!detail::check_seta<T, Policy>(seta, fn)) {
     critical_line_result<T> r;
@@ -477,11 +477,9 @@ inline critical_line_result<T> critical_line(const TwoLevelSeta<T>& seta,
     r.end = line_end::no_natural_state;
     return r;
   }
-  const bool e1 = !isinf(seta.EA1), e2 = !isinf(seta.EA2);
-  if (e1 && e2) return detail::critical_line_imp<Policy, true, true>(seta, options);
-  if (e1) return detail::critical_line_imp<Policy, true, false>(seta, options);
-  if (e2) return detail::critical_line_imp<Policy, false, true>(seta, options);
-  return detail::critical_line_imp<Policy, false, false>(seta, options);
+  return detail::visit_extensibility(seta, [&](auto E1, auto E2) {
+    return detail::critical_line_imp<Policy, decltype(E1)::value, decltype(E2)::value>(seta, options);
+  });
 }
 
 // The line at given Ft values (any order, negative allowed), out[i] for Ft[i].
@@ -489,13 +487,10 @@ template <class T, class Policy = policies::default_policy>
 inline void critical_line_at(const TwoLevelSeta<T>& seta, const T* Ft, std::size_t count, critical_state<T>* out,
                              const critical_line_options<T>& options = critical_line_options<T>(),
                              const Policy& = Policy()) {
-  using std::isinf;
   if (!detail::check_line_inputs<T, Policy>(seta, Ft, count, out, "gecko::critical_line_at")) return;
-  const bool e1 = !isinf(seta.EA1), e2 = !isinf(seta.EA2);
-  if (e1 && e2) detail::critical_line_at_imp<Policy, true, true>(seta, Ft, count, options, out);
-  else if (e1) detail::critical_line_at_imp<Policy, true, false>(seta, Ft, count, options, out);
-  else if (e2) detail::critical_line_at_imp<Policy, false, true>(seta, Ft, count, options, out);
-  else detail::critical_line_at_imp<Policy, false, false>(seta, Ft, count, options, out);
+  detail::visit_extensibility(seta, [&](auto E1, auto E2) {
+    detail::critical_line_at_imp<Policy, decltype(E1)::value, decltype(E2)::value>(seta, Ft, count, options, out);
+  });
 }
 
 template <class T, class Policy = policies::default_policy>

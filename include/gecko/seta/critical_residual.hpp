@@ -117,25 +117,26 @@ inline seta_geometry<E1, E2, S> make_seta_geometry(const seta_params<D>& d, cons
   g.trig1 = {v, u0, sh1, ch1, sm1 * cphi - cm1 * sphi};
   g.h2 = (seta_pi<T>() / 2 - value_of(beta)) / 2;
   g.h1 = (value_of(beta) - value_of(d.alpha2) - value_of(d.alpha1)) / 2;
-  // Spatula: M2 = Ft + w.
+  // Spatula: M2 = Ft + w, paper 001 eq (9); R2 = 1/2 EI2 theta2'^2 at the joint, paper 001 eq (8).
   const S M2 = Ft + d.w;
   S R2 = M2 - N * ub;
   if constexpr (E2) R2 = R2 - d.c2 * N * N * ub * ub * T(0.5);
   g.spatula = make_segment<E2>(S(d.EI2), S(d.c2), M2, N);
   g.X3_s2 = p / seg_sqrt_f4(g.spatula, ub);
-  // f3 at the contact edge: (w - c Ft^2/2) / f4 = w edge^2 / f4(Ft/N), no cancellation.
+  // f3 at the contact edge: (w - c Ft^2/2) / f4 = w edge^2 / f4(Ft/N), no cancellation
+  // (Griffith's condition there, paper 001 eq (3)).
   if constexpr (E2) g.X3_e2 = sqrt(S(d.w)) * edge / seg_sqrt_f4(g.spatula, cphi);
   else g.X3_e2 = sqrt(S(d.w)) * edge;
-  // Beam: M1 from the joint conditions.
+  // Beam: M1 from the joint conditions, paper 001 eq (12) (joint moment balance, eq (4)).
   const S ratio = S(d.EI2 / d.EI1);
   S M1 = ratio * p * p + N * v;
   if constexpr (E1) M1 = M1 + d.c1 * N * N * v * v * T(0.5);
   g.beam = make_segment<E1>(S(d.EI1), S(d.c1), M1, N);
-  S R1 = M1 - N * u0;
+  S R1 = M1 - N * u0;  // R1 at the base, paper 001 eq (8)
   if constexpr (E1) R1 = R1 - d.c1 * N * N * u0 * u0 * T(0.5);
   g.X3_s1 = q / seg_sqrt_f4(g.beam, u0);
   g.X3_e1 = sqrt(ratio) * p / seg_sqrt_f4(g.beam, v);
-  // First integrals: p^2 = R2(u_beta), q^2 = R1(u0).
+  // First integrals, paper 001 eq (8): p^2 = R2(u_beta), q^2 = R1(u0).
   g.F3 = p * p - R2;
   g.F4 = q * q - R1;
   if (angles) {
@@ -166,6 +167,7 @@ inline void seta_residual(const seta_params<D>& d, const S& Fn, const S& beta, c
   const bool angles = !plan.beam.direct || !plan.spatula.direct;
   const auto g = make_seta_geometry<E1, E2>(d, Fn, beta, p, q, Ft, edge, angles);
   scalar_of_t<S> u[2] = {1, 1};
+  // The two length equations, paper 001 eq (15) (eq (10) the spatula's, eq (13) the beam's).
   F[0] = segment_length<Policy>(g.spatula, plan.spatula, g.psi_s2, g.X3_s2, g.psi_e2, g.X3_e2, &u[1], &g.trig2) - d.l2;
   F[1] = segment_length<Policy>(g.beam, plan.beam, g.psi_s1, g.X3_s1, g.psi_e1, g.X3_e1, &u[0], &g.trig1) - d.l1;
   F[2] = g.F3;

@@ -59,6 +59,7 @@ inline segment_constants<S, Extensible> make_segment(const S& EI, const S& c, co
   g.N = N;
   g.c = c;
   if constexpr (Extensible) {
+    // R(u) = M - N u - c N^2 u^2/2 (paper 001 eq (8)) factored as f3(u) f4(u).
     g.s = sqrt(T(1) + T(2) * c * M);
     const S one_s = T(1) + g.s;
     g.b3 = -(N * one_s) * T(0.5);
@@ -135,6 +136,7 @@ inline S length_direct(const segment_constants<S, E>& g, const direct_trig<S>& t
   const S U13 = a + b;
   const S U14 = a - b;
   if (u14) *u14 = value_of(U14) * (value_of(P) > 0 ? T(1) : T(-1)) * (value_of(t.sh) > 0 ? T(1) : T(-1));
+  // One segment's length, paper 001 eq (15), as one Carlson R_F of the quartic R(u) (1 - u^2).
   return g.scale * carlson_rf_ad<Policy>(U12 * U12, U13 * U13, U14 * U14);
 }
 
@@ -298,8 +300,8 @@ inline S rotation_phase(const segment_constants<S, E>& g, const S& Kr, segment_r
   return Kr - length_to_top<Policy>(g, psi, X3abs);
 }
 
-// The segment length under a given plan; psi_s, X3s at the start (s small), psi_e, X3e at the
-// end. X3 = sign(theta') sqrt(f3).
+// The segment length under a given plan (paper 001 eq (15), split at turning points); psi_s, X3s
+// at the start (s small), psi_e, X3e at the end. X3 = sign(theta') sqrt(f3).
 // trig: the direct form's trigonometry when the caller has it (else computed from the angles).
 template <class Policy, class S, bool E>
 inline S segment_length(const segment_constants<S, E>& g, const segment_plan& plan, const S& psi_s,

@@ -19,6 +19,7 @@
 #include "gecko/seta/critical_line.hpp"
 #include "gecko/seta/detail/dual.hpp"
 #include "gecko/seta/detail/seta_system.hpp"
+#include "gecko/seta/extensibility.hpp"
 
 namespace gecko {
 
@@ -88,13 +89,11 @@ inline std::vector<critical_sensitivity<T>> sensitivities(const TwoLevelSeta<T>&
   using std::isinf;
   const auto states = critical_line_at(seta, Ft, options, pol);
   std::vector<critical_sensitivity<T>> out(states.size());
-  const bool e1 = !isinf(seta.EA1), e2 = !isinf(seta.EA2);
   for (std::size_t i = 0; i < states.size(); ++i) {
     out[i].state = states[i];
-    if (e1 && e2) detail::design_derivatives<Policy, true, true>(seta, states[i], out[i]);
-    else if (e1) detail::design_derivatives<Policy, true, false>(seta, states[i], out[i]);
-    else if (e2) detail::design_derivatives<Policy, false, true>(seta, states[i], out[i]);
-    else detail::design_derivatives<Policy, false, false>(seta, states[i], out[i]);
+    detail::visit_extensibility(seta, [&](auto E1, auto E2) {
+      detail::design_derivatives<Policy, decltype(E1)::value, decltype(E2)::value>(seta, states[i], out[i]);
+    });
     if (isinf(seta.EA1)) out[i].dFn[2] = out[i].dtheta_joint[2] = T(0);
     if (isinf(seta.EA2)) out[i].dFn[3] = out[i].dtheta_joint[3] = T(0);
   }

@@ -57,8 +57,10 @@ inline seta_shape<T> shape(const TwoLevelSeta<T>& seta, const critical_state<T>&
   struct Y { T th, om, x, z; };
   auto deriv = [&](const Y& y, T EI, T c) {
     const T st = sin(y.th), ct = cos(y.th);
-    const T Tax = Ft * st - Fn * ct;
+    const T Tax = Ft * st - Fn * ct;  // the axial force T(theta), paper 001 eqs (1)-(2)
     const T stretch = 1 + Tax * c;
+    // EI theta'' = -(Fn sin theta + Ft cos theta)(1 + T/EA), paper 001 eq (1); x, z along the
+    // stretched arc (dz/ds = -(1 + T/EA) cos theta).
     return Y{y.om, -(Fn * st + Ft * ct) * stretch / EI, stretch * st, -stretch * ct};
   };
   auto axpy = [](const Y& y, T h, const Y& k) { return Y{y.th + h * k.th, y.om + h * k.om, y.x + h * k.x, y.z + h * k.z}; };
@@ -129,8 +131,8 @@ inline seta_shape<T> shape(const TwoLevelSeta<T>& seta, const critical_state<T>&
     advance(y, h1, seta.EI1, c1);
     record(i + 1 == steps_per_segment ? seta.l1 : h1 * (i + 1), y);
   }
-  y.th += seta.alpha2;
-  y.om *= seta.EI1 / seta.EI2;
+  y.th += seta.alpha2;           // the kink at the joint, paper 001 eq (4)
+  y.om *= seta.EI1 / seta.EI2;   // moment balance there, paper 001 eq (4)
   out.theta.back() = y.th;  // theta just after the kink: the spatula's angle at the joint
   const T rs = fabs(state.theta_rate_joint) > 1 ? fabs(state.theta_rate_joint) : T(1);
   T mismatch = fabs(y.th - state.theta_joint);

@@ -20,6 +20,7 @@
 #include "gecko/core/policy.hpp"
 #include "gecko/seta/critical_line.hpp"
 #include "gecko/seta/elastica_segment.hpp"
+#include "gecko/seta/extensibility.hpp"
 
 namespace gecko {
 
@@ -93,7 +94,7 @@ struct fiber_system {
     using std::atan2; using std::sqrt;
     const S N = sqrt(Fn * Fn + Ft * Ft);
     const S cphi = Ft / N, sphi = Fn / N;
-    const S M = Ft + w;
+    const S M = Ft + w;  // the contact-edge first integral, paper 001 eq (9)
     const auto g = make_segment<E>(S(EI), S(c), M, N);
     const S u0 = sa * cphi - ca * sphi;
     const S X3s = q / seg_sqrt_f4(g, u0);
@@ -169,7 +170,7 @@ struct fiber_system {
     using std::sqrt;
     const T Delta = seta_pi<T>() / 2 - alpha;
     const T Meq = sqrt(2 * EI * w);
-    const T Q = 2 * EI * (Delta - Meq * l / EI) / (l * l);
+    const T Q = 2 * EI * (Delta - Meq * l / EI) / (l * l);  // one-segment paper 001 eq (18) at Ft = 0
     vec z;
     z << Q / sa, (Meq + Q * l) / sqrt(2 * EI);
     return z;
@@ -235,7 +236,6 @@ template <class T, class Policy = policies::default_policy>
 inline void critical_line_at(const SingleFiber<T>& fiber, const T* Ft, std::size_t count, critical_state<T>* out,
                              const critical_line_options<T>& options = critical_line_options<T>(),
                              const Policy& = Policy()) {
-  using std::isinf;
   constexpr const char* fn = "gecko::critical_line_at(SingleFiber)";
   const bool ok = detail::check_fiber<T, Policy>(fiber, fn);
   const T fm = ft_max(fiber);
@@ -245,8 +245,9 @@ inline void critical_line_at(const SingleFiber<T>& fiber, const T* Ft, std::size
     if (!ok || !detail::check_ft<T, Policy>(Ft[i], fm, fn)) out[i].status = critical_status::invalid_input;
   }
   if (!ok) return;
-  if (isinf(fiber.EA)) detail::fiber_line_at_imp<Policy, false>(fiber, Ft, count, options, out);
-  else detail::fiber_line_at_imp<Policy, true>(fiber, Ft, count, options, out);
+  detail::visit_extensibility(detail::is_extensible(fiber.EA), [&](auto E) {
+    detail::fiber_line_at_imp<Policy, decltype(E)::value>(fiber, Ft, count, options, out);
+  });
 }
 
 template <class T, class Policy = policies::default_policy>

@@ -19,6 +19,7 @@
 #include "gecko/seta/critical_residual.hpp"
 #include "gecko/seta/detail/newton.hpp"
 #include "gecko/seta/detail/seta_system.hpp"
+#include "gecko/seta/extensibility.hpp"
 #include "gecko/seta/two_level_seta.hpp"
 
 namespace gecko {
@@ -179,7 +180,6 @@ template <class T, class Policy = policies::default_policy>
 inline critical_state<T> solve_critical(const TwoLevelSeta<T>& seta, T Ft, const critical_guess<T>& guess,
                                         const solve_options<T>& options = solve_options<T>(),
                                         const Policy& = Policy()) {
-  using std::isinf;
   constexpr const char* fn = "gecko::solve_critical";
   critical_state<T> bad;
   bad.Ft = Ft;
@@ -192,11 +192,9 @@ inline critical_state<T> solve_critical(const TwoLevelSeta<T>& seta, T Ft, const
     return bad;
   }
   const auto d = detail::make_seta_params(seta);
-  const bool e1 = !isinf(seta.EA1), e2 = !isinf(seta.EA2);
-  if (e1 && e2) return detail::solve_critical_imp<Policy, true, true>(d, Ft, guess, options);
-  if (e1) return detail::solve_critical_imp<Policy, true, false>(d, Ft, guess, options);
-  if (e2) return detail::solve_critical_imp<Policy, false, true>(d, Ft, guess, options);
-  return detail::solve_critical_imp<Policy, false, false>(d, Ft, guess, options);
+  return detail::visit_extensibility(seta, [&](auto E1, auto E2) {
+    return detail::solve_critical_imp<Policy, decltype(E1)::value, decltype(E2)::value>(d, Ft, guess, options);
+  });
 }
 
 }  // namespace gecko

@@ -35,7 +35,7 @@ struct TwoLevelSeta {
 template <class T>
 inline T ft_max(const TwoLevelSeta<T>& s) {
   using std::sqrt;
-  return sqrt(2 * s.EA2 * s.w);
+  return sqrt(2 * s.EA2 * s.w);  // paper 001 eq (3) needs w - Ft^2/(2 EA2) >= 0
 }
 
 // The design fields in their canonical order (the order of every flat design array: the bindings,

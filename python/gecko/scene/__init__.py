@@ -17,6 +17,7 @@ from .models import MODELS
 from .planner import Plan, plan_scene
 from .runner import Cache, Curve, RunResult, run_scene
 from .schema import Scene, load_scene
+from . import hierarchy as _hierarchy  # noqa: F401,E402  (registers the hierarchy models)
 
 __all__ = ["SceneError", "Scene", "load_scene", "validate_scene", "Plan", "plan_scene", "run_scene",
            "RunResult", "Curve", "Cache", "MODELS", "figure_scenes", "FIGURES_DIR"]

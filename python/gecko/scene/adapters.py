@@ -97,6 +97,14 @@ class Adapter:
     def run(self, ex, st, step: Step) -> None:
         getattr(self, "k_" + step.kernel)(ex, st, step)
 
+    def plot_curves(self, plot, st, rows, many: bool, Curve) -> list:
+        """The curves of a plot kind this adapter draws itself (``Curve``: the runner's class)."""
+        return []
+
+    def study_csv(self, st, rows) -> Dict[str, str]:
+        """Tables of the outputs this adapter writes itself (``csv = true``): file name -> text."""
+        return {}
+
     def k_fn0_from_line(self, ex, st, step: Step) -> None:
         for i in step.points:
             _set_fn0(ex, st, i, float(ex.data[st.name][i]["critical_line"]["Fn"][0]))
@@ -437,6 +445,14 @@ class ForceTraceAdapter(Adapter):
             ex.progress.advance(1, st.name)
 
 
+def sliding_model(v):
+    """The gecko.SlidingModel of a design with the steady_sliding model's parameters."""
+    from ..friction import EyringDetachment, SlidingModel, ViscoelasticDetachment
+    law = (ViscoelasticDetachment(v["G0"], v["V_star"], v["n"]) if v["law"] == "viscoelastic"
+           else EyringDetachment(v["G0"], v["V_star"]))
+    return SlidingModel(N=v["N"], K=v["K"], f_par1=v["f_par1"], f_perp1=v["f_perp1"], law=law)
+
+
 class SteadySlidingAdapter(Adapter):
     models = ("steady_sliding",)
 
@@ -446,13 +462,11 @@ class SteadySlidingAdapter(Adapter):
         return [Step(st.name, "forces", [p.index for p in st.points], "eqs 5-10 with the detachment law in C++")]
 
     def k_forces(self, ex, st, step: Step) -> None:
-        from ..friction import EyringDetachment, SlidingModel, ViscoelasticDetachment, steady_sliding
+        from ..friction import steady_sliding
         for i in step.points:
             p = st.points[i]
             v = p.values
-            law = (ViscoelasticDetachment(v["G0"], v["V_star"], v["n"]) if v["law"] == "viscoelastic"
-                   else EyringDetachment(v["G0"], v["V_star"]))
-            model = SlidingModel(N=v["N"], K=v["K"], f_par1=v["f_par1"], f_perp1=v["f_perp1"], law=law)
+            model = sliding_model(v)
             V = _grid(st, p, "forces", ex.scene.resolution)
             r = steady_sliding(V, model, t_off=v["t_off"])
             ex.data[st.name][i]["forces"] = {"V": V, "F_par": np.atleast_1d(r.F_par),

@@ -134,6 +134,10 @@ CONTACT_GRID_FT = {"range": [0.0, "0.99*ft_end"], "num": 100}
 
 MODELS: Dict[str, Model] = {}
 
+#: output name -> parser(model, name, value, key) of its table, for outputs declared outside this
+#: module (models registered by other modules, e.g. gecko.scene.hierarchy)
+OUTPUT_PARSERS: Dict[str, Callable[..., Optional["OutputSpec"]]] = {}
+
 
 def _add(m: Model) -> None:
     MODELS[m.name] = m
@@ -312,6 +316,8 @@ def parse_output(model: Model, name: str, value, key: str) -> Optional[OutputSpe
             return None
         sps = _int_in(table.get("samples_per_segment", 50), f"{key}.samples_per_segment", 1, 10**6)
         return OutputSpec(name, {"samples_per_segment": sps})
+    if name in OUTPUT_PARSERS:
+        return OUTPUT_PARSERS[name](model, name, value, key)
     raise SceneError(f"output {name!r} is not handled", key=key)  # pragma: no cover
 
 

@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import List, Sequence
+from typing import Callable, Dict, List, Sequence
 
 import numpy as np
 
@@ -27,10 +27,20 @@ _SYMBOLS = {"ratio": r"$EI_2/EI_1$", "EI2": r"$EI_2/(w l_1^2)$", "alpha2": r"$\a
             "alpha1": r"$\alpha_1$ (rad)", "l2": r"$l_2/l_1$", "EA2": r"$EA_2/w$", "EA1": r"$EA_1/w$"}
 
 
+#: plot kind -> (renderer(fig, plot, curves) -> the axes it drew on, default size in inches), for
+#: kinds declared outside this module (e.g. gecko.scene.hierarchy)
+PLOT_RENDERERS: Dict[str, Callable] = {}
+
+
 def render_plot(scene, plot, curves, folder: Path, formats: Sequence[str]) -> List[str]:
     from .. import plot as gp
     opts = plot.options
     kind = plot.kind
+    if kind in PLOT_RENDERERS:
+        draw, size = PLOT_RENDERERS[kind]
+        fig = _figure(opts.get("size", size))
+        axes = draw(fig, plot, curves)
+        return _finish(scene, plot, fig, axes, folder, formats)
     size = opts.get("size", (10.0, 4.2) if kind == "steady_sliding" else (6.4, 4.8))
     fig = _figure(size)
     if kind == "steady_sliding":
@@ -100,6 +110,13 @@ def render_plot(scene, plot, curves, folder: Path, formats: Sequence[str]) -> Li
             a.set_xscale(opts.get("xscale", "log"))
             a.grid(True, which="both", linewidth=0.4, alpha=0.5)
             a.axhline(0.0, color="0.6", linewidth=0.8, zorder=0)
+    return _finish(scene, plot, fig, axes, folder, formats)
+
+
+def _finish(scene, plot, fig, axes, folder: Path, formats: Sequence[str]) -> List[str]:
+    """The options every plot kind shares (limits, scales, labels, legend, title), then the files."""
+    opts = plot.options
+    kind = plot.kind
     for a in axes:
         if kind not in ("critical_line", "steady_sliding"):
             if "xlim" in opts:

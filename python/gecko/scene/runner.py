@@ -255,6 +255,8 @@ def plot_curves(scene: Scene, plot, data) -> List[Curve]:
                 base = st.label_for(p, many)
                 curves.append(Curve(st.name, base, f["V"], f["F_par"], "V", "F_par", "F_par", panel=0))
                 curves.append(Curve(st.name, base, f["V"], f["F_perp"], "V", "F_perp", "F_perp", panel=1))
+        else:  # a plot kind its model's adapter draws
+            curves.extend(ADAPTERS[st.model.name].plot_curves(plot, st, rows, many, Curve))
     return curves
 
 
@@ -328,6 +330,7 @@ def study_csv(study: Study, rows: List[Dict[str, Any]]) -> Dict[str, str]:
             for vals in zip(tr.t, tr.d_par, tr.d_perp, tr.f_par, tr.f_perp):
                 wr.writerow([p.index] + [p.swept[n] for n in swept] + [repr(float(v)) for v in vals])
         out[f"{study.name}.force_trace.csv"] = buf.getvalue()
+    out.update(ADAPTERS[study.model.name].study_csv(study, rows))
     return out
 
 

@@ -594,7 +594,7 @@ def _resolve(pending: Dict[str, str], vals: Dict[str, Any], model: Model, key: s
 
 
 def _defaults_from_preset(model: Model, vals: Dict[str, Any]) -> None:
-    if model.name != "steady_sliding":
+    if model.param("preset") is None:  # steady_sliding and the models sharing its parameters
         return
     from ..friction import FIG6_PLASTIC, FIG6_VISCOELASTIC, EyringDetachment
     preset = FIG6_VISCOELASTIC if vals.get("preset", "viscoelastic") == "viscoelastic" else FIG6_PLASTIC

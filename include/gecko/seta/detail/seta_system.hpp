@@ -26,7 +26,7 @@ struct seta_system {
   using plan_type = seta_plan;
 
   seta_params<T> d;
-  T ftmax;  // (Ft)max = sqrt(2 EA2 w); infinity for an inextensible spatula
+  T ftmax;  // (Ft)max = sqrt(2 EA2 w) (paper 001 eq (3)); infinity for an inextensible spatula
   // Largest admissible axial strain of a reported state (gecko/seta/admissibility.hpp).
   T strain_limit = std::numeric_limits<T>::infinity();
 
@@ -143,8 +143,8 @@ struct seta_system {
     const T cP = d.l2 * d.l2 / (2 * d.EI2) + d.l1 * d.l2 / d.EI1;
     const T cQ = d.l1 * d.l1 / (2 * d.EI1);
     const T An = cP * sin(a12) + cQ * sin(d.alpha1);
-    const T Fn = (Delta - Meq * (d.l2 / d.EI2 + d.l1 / d.EI1)) / An;
-    const T P = Fn * sin(a12), Q = Fn * sin(d.alpha1);
+    const T Fn = (Delta - Meq * (d.l2 / d.EI2 + d.l1 / d.EI1)) / An;  // (Fn)0, paper 001 eqs (19)-(20)
+    const T P = Fn * sin(a12), Q = Fn * sin(d.alpha1);  // P, Q of paper 001 eq (18) at Ft = 0
     const T beta = a12 + Delta - Meq * d.l2 / d.EI2 - P * d.l2 * d.l2 / (2 * d.EI2);
     const T p = (Meq + P * d.l2) / sqrt(2 * d.EI2);
     const T q = (Meq + P * d.l2 + Q * d.l1) / sqrt(2 * d.EI1);
