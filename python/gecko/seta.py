@@ -553,7 +553,7 @@ class TwoLevelSeta:
             fn_b, ft_b = np.broadcast_arrays(fn_a, ft_a)
         except ValueError:
             raise ValueError(f"contact_state: Fn and Ft do not broadcast (shapes {np.shape(Fn)} and "
-                             f"{np.shape(Ft)})") from None
+                             f"{np.shape(Ft)}): need shapes that broadcast together") from None
         shape = fn_b.shape
         fn = np.ascontiguousarray(fn_b).reshape(-1)
         ft = np.ascontiguousarray(ft_b).reshape(-1)
