@@ -33,7 +33,9 @@ Per state:
   that line ended before this Ft as the claim states (``turned_back`` at a fold for status 2,
   ``unsupported_state`` for status 3: the root then lies on another branch, or beyond a stretch
   outside the forms, and the claim as stated holds: ``root_beyond_line_end``), else
-  ``contradicted``: the solver should have found the state.
+  ``contradicted``: the solver should have found the state. ``root_below_traced_range``: Ft < 0
+  below every traced node (the trace runs from Ft = 0 towards (Ft)max): the claim "not reached"
+  holds by construction, but a critical state exists there.
 * ``undecided``: some grid signs are below the shot's error estimate (stiff shots at large |Fn|).
 
     python3 -m validation.claims --sample 40 [--seed 1] [--grid 61] [--json validation/results/claims.json]
@@ -157,10 +159,13 @@ def line_end_check(p, ft: float, status: int) -> str:
     import gecko
     s = gecko.TwoLevelSeta(**dict(zip(FIELDS, map(float, p))))
     line = s.critical_line(errors="nan")
+    if len(line.Ft) and ft < float(np.min(line.Ft)):
+        # The trace runs from Ft = 0 towards (Ft)max: a negative Ft below its range is "not
+        # reached" by construction, though a critical state exists there.
+        return "root_below_traced_range"
     ended = line.end_code == (gecko.LineEnd.turned_back if status == 2 else gecko.LineEnd.unsupported_state)
     ft_end = float(line.Ft[-1]) if len(line.Ft) else 0.0
-    beyond = (ft > ft_end) if ft >= 0 else True  # the trace runs from Ft = 0 upwards
-    return "root_beyond_line_end" if ended and beyond else "contradicted"
+    return "root_beyond_line_end" if ended and ft > ft_end else "contradicted"
 
 
 def sample_claims(z, n: int, seed: int):
