@@ -4,10 +4,11 @@
 # flags, runs the two builds alternately (ROUNDS rounds, so a noisy interval hits both alike) and
 # writes bench/results/friction_population.{md,csv} with the medians over the rounds.
 #
-#   bench/friction/population_cost.sh [--reps N]     environment: BASE (main), ROUNDS (5), CXX
+#   bench/friction/population_cost.sh [--reps N]     environment: BASE, ROUNDS (5), CXX
+# BASE defaults to 7f3d0a6^, the last commit before populations (main now has them).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
-base="${BASE:-main}"
+base="${BASE:-7f3d0a6^}"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$work/main/gecko/friction"
@@ -19,9 +20,11 @@ cxx="${CXX:-c++}"
   -o "$work/bench_main"
 "$cxx" "${flags[@]}" -DGECKO_BENCH_POPULATION -I"$root/include" \
   "$root/bench/friction/bench_population.cpp" -o "$work/bench_tree"
-for r in $(seq 1 "${ROUNDS:-5}"); do
-  "$work/bench_main" "$@" | sed "s/^/main $r /" >> "$work/lines"
-  "$work/bench_tree" "$@" | sed "s/^/tree $r /" >> "$work/lines"
+for r in $(seq 1 "${ROUNDS:-5}"); do  # the order alternates too: neither build always goes first
+  first=main second=tree
+  if (( r % 2 == 0 )); then first=tree second=main; fi
+  "$work/bench_$first" "$@" | sed "s/^/$first $r /" >> "$work/lines"
+  "$work/bench_$second" "$@" | sed "s/^/$second $r /" >> "$work/lines"
 done
 python3 - "$work/lines" "$root/bench/results" "$(git -C "$root" rev-parse --short "$base")" \
   "$(git -C "$root" rev-parse --short HEAD)" "${flags[*]}" <<'PY'

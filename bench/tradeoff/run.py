@@ -511,6 +511,13 @@ def main(argv=None):
     gecko_mod = import_gecko()
     print("== scipy.special and gecko Python on the same kernel inputs")
     rows += time_python_kernels(args.quick, gecko_mod)
+    # ---- SIMD batch loops (issue 16, item 2): bench/tradeoff/simd_batch.py, kept apart ----------------------
+    if gecko_mod is not None and hasattr(gecko_mod.elliptic, "simd_levels"):
+        print("== gecko ufunc batch path per SIMD level, 1 and 2 threads, scipy.special beside (1e6 elements)")
+        sys.path.insert(0, str(HERE))
+        import simd_batch
+        rows += simd_batch.time_simd_batch(args.quick, gecko_mod)
+    # ---- end of the SIMD section ---------------------------------------------------------------------------
     print("== scipy peer on the same critical line")
     rows += time_scipy_peer(args.quick, gecko_mod, args.peer)
     rows = order_rows(rows)

@@ -16,16 +16,9 @@ from typing import NamedTuple
 
 from . import _core
 from ._vectorize import error_code as _error_code, flat_args as _flat_args, shaped as _shaped
-from ._vectorize import ERROR_CODES as _CODES, SCALAR_TYPES as _S, ufunc_call as _ufunc_call
+from ._vectorize import ERROR_CODES as _CODES, ufunc_call as _ufunc_call
 
 ufuncs = _core.ufuncs
-_ellint_f_scalar = _core.ellint_f_scalar
-_ellint_e_scalar = _core.ellint_e_scalar
-_ellint_k_scalar = _core.ellint_k_scalar
-_carlson_rf_scalar = _core.carlson_rf_scalar
-_carlson_rd_scalar = _core.carlson_rd_scalar
-_carlson_rj_scalar = _core.carlson_rj_scalar
-_carlson_rc_scalar = _core.carlson_rc_scalar
 
 __all__ = [
     "ellint_f", "ellint_e", "ellint_k", "ellint_ek", "EK",
@@ -57,10 +50,112 @@ def set_num_threads(threads: int) -> int:
     return _core.set_ufunc_threads(threads)
 
 
-# Each function: plain Python scalars go to the compiled scalar kernel directly (the ufunc
-# machinery costs more than the kernel; floats with the default errors are tested first, the
-# cheapest test), anything else goes through the ufunc.
-def ellint_f(phi, m, *, errors: str = "raise", **kwargs):
+def set_simd_level(level: str) -> str:
+    """Vector instruction set of the float64 loops of F, E and R_F (for tests and benchmarks).
+
+    At import the best level the CPU offers is chosen, or the one named by the environment
+    variable ``GECKO_SIMD`` (``scalar``, ``sse``, ``avx2``, ``avx512``). Every level gives the
+    same accuracy; results do not depend on the thread count at any level.
+
+    Parameters
+    ----------
+    level : {"scalar", "sse", "avx2", "avx512", "auto"}
+        ``scalar`` runs the one-element kernels; ``auto`` the best available level
+        (see :func:`simd_levels`).
+
+    Returns
+    -------
+    str
+        The previous level.
+
+    Raises
+    ------
+    ValueError
+        If the level is unknown or not available on this machine.
+
+    Examples
+    --------
+    >>> from gecko import elliptic
+    >>> before = elliptic.set_simd_level("scalar")
+    >>> elliptic.simd_level()
+    'scalar'
+    >>> elliptic.set_simd_level(before)
+    'scalar'
+    """
+    return _core.set_simd_level(level)
+
+
+def simd_level() -> str:
+    """The vector instruction set the float64 loops of F, E and R_F use now.
+
+    Returns
+    -------
+    str
+        One of ``scalar``, ``sse``, ``avx2``, ``avx512``.
+
+    Examples
+    --------
+    >>> from gecko import elliptic
+    >>> elliptic.simd_level() in elliptic.simd_levels()
+    True
+    """
+    return _core.simd_level()
+
+
+def simd_levels() -> list:
+    """The levels :func:`set_simd_level` accepts on this machine, lowest first.
+
+    Returns
+    -------
+    list of str
+        Always starts with ``scalar``.
+
+    Examples
+    --------
+    >>> from gecko import elliptic
+    >>> elliptic.simd_levels()[0]
+    'scalar'
+    """
+    return _core.simd_levels()
+
+
+# The kernel functions below are made by one template: plain Python scalars and 0-d float64
+# arrays go to the compiled scalar kernel directly (the ufunc machinery costs more than the
+# kernel; floats with the default errors are tested first, the cheapest test; _core.<name>_fast
+# sorts the rest in C and answers NotImplemented for arrays), anything else goes through the ufunc.
+# The source is generated (as collections.namedtuple does) so that each function keeps its named
+# positional parameters and costs no more per call than a hand-written one; it is compiled in this
+# module's namespace, so doctest and inspect see ordinary module functions.
+_KERNEL_TEMPLATE = """
+def _make(_ufunc, _scalar, _fast):
+    def {name}({params}, *, errors: str = "raise", **kwargs):
+        if {floats} and errors == "raise" and not kwargs:
+            return _scalar({params}, 0)
+        if not kwargs and errors in _CODES:
+            r = _fast({params}, _CODES[errors])
+            if r is not NotImplemented:
+                return r
+        return _ufunc_call(_ufunc, _scalar, ({params},), {names!r}, errors, kwargs)
+    return {name}
+"""
+
+
+def _kernel_function(name, params, doc):
+    """The public function `name`(*params, errors=, **kwargs) over ufuncs.<name> and the compiled
+    scalar kernel <name>_scalar."""
+    src = _KERNEL_TEMPLATE.format(
+        name=name, params=", ".join(params), names=tuple(params),
+        floats=" and ".join(f"type({p}) is float" for p in params))
+    scope = {}
+    exec(compile(src, f"<gecko.elliptic.{name}>", "exec"), globals(), scope)
+    f = scope["_make"](getattr(ufuncs, name), getattr(_core, name + "_scalar"), getattr(_core, name + "_fast"))
+    f.__doc__ = doc
+    f.__module__ = __name__
+    return f
+
+
+ellint_f = _kernel_function(
+    "ellint_f", ('phi', 'm'),
     """Incomplete elliptic integral of the first kind, F(phi | m) = int_0^phi dt / sqrt(1 - m sin^2 t).
 
     Broadcasts like a numpy ufunc; the loop runs in C++ without the GIL. Parameter convention
@@ -96,15 +191,11 @@ def ellint_f(phi, m, *, errors: str = "raise", **kwargs):
     1.85407467730137
     >>> bool(np.isclose(gecko.ellint_f(np.pi, 0.5), 2 * gecko.ellint_k(0.5), rtol=1e-15))
     True
-    """
-    if type(phi) is float and type(m) is float and errors == "raise" and not kwargs:
-        return _ellint_f_scalar(phi, m, 0)
-    if not kwargs and type(phi) in _S and type(m) in _S and errors in _CODES:
-        return _ellint_f_scalar(phi, m, _CODES[errors])
-    return _ufunc_call(ufuncs.ellint_f, _core.ellint_f_scalar, (phi, m), ("phi", "m"), errors, kwargs)
+    """)
 
 
-def ellint_e(phi, m, *, errors: str = "raise", **kwargs):
+ellint_e = _kernel_function(
+    "ellint_e", ('phi', 'm'),
     """Incomplete elliptic integral of the second kind, E(phi | m) = int_0^phi sqrt(1 - m sin^2 t) dt.
 
     Parameters
@@ -135,15 +226,11 @@ def ellint_e(phi, m, *, errors: str = "raise", **kwargs):
     >>> import numpy as np, gecko
     >>> round(float(gecko.ellint_e(np.pi / 2, 0.5)), 14)
     1.35064388104768
-    """
-    if type(phi) is float and type(m) is float and errors == "raise" and not kwargs:
-        return _ellint_e_scalar(phi, m, 0)
-    if not kwargs and type(phi) in _S and type(m) in _S and errors in _CODES:
-        return _ellint_e_scalar(phi, m, _CODES[errors])
-    return _ufunc_call(ufuncs.ellint_e, _core.ellint_e_scalar, (phi, m), ("phi", "m"), errors, kwargs)
+    """)
 
 
-def ellint_k(m, *, errors: str = "raise", **kwargs):
+ellint_k = _kernel_function(
+    "ellint_k", ('m',),
     """Complete elliptic integral of the first kind, K(m) = F(pi/2 | m).
 
     Parameters
@@ -174,12 +261,7 @@ def ellint_k(m, *, errors: str = "raise", **kwargs):
     1.85407467730137
     >>> gecko.ellint_k([0.5, 1.5], errors="nan")
     array([1.85407468,        nan])
-    """
-    if type(m) is float and errors == "raise" and not kwargs:
-        return _ellint_k_scalar(m, 0)
-    if not kwargs and type(m) in _S and errors in _CODES:
-        return _ellint_k_scalar(m, _CODES[errors])
-    return _ufunc_call(ufuncs.ellint_k, _core.ellint_k_scalar, (m,), ("m",), errors, kwargs)
+    """)
 
 
 class EK(NamedTuple):
@@ -236,7 +318,8 @@ def ellint_ek(m, *, errors: str = "raise") -> EK:
     return EK(_shaped(e, shape), _shaped(k, shape))
 
 
-def carlson_rf(x, y, z, *, errors: str = "raise", **kwargs):
+carlson_rf = _kernel_function(
+    "carlson_rf", ('x', 'y', 'z'),
     """Carlson's symmetric integral R_F(x, y, z) = 1/2 int_0^inf dt / sqrt((t+x)(t+y)(t+z)).
 
     Parameters
@@ -265,15 +348,11 @@ def carlson_rf(x, y, z, *, errors: str = "raise", **kwargs):
     >>> import gecko
     >>> round(float(gecko.carlson_rf(1.0, 2.0, 0.0)), 13)     # Carlson's test value
     1.3110287771461
-    """
-    if type(x) is float and type(y) is float and type(z) is float and errors == "raise" and not kwargs:
-        return _carlson_rf_scalar(x, y, z, 0)
-    if not kwargs and type(x) in _S and type(y) in _S and type(z) in _S and errors in _CODES:
-        return _carlson_rf_scalar(x, y, z, _CODES[errors])
-    return _ufunc_call(ufuncs.carlson_rf, _core.carlson_rf_scalar, (x, y, z), ("x", "y", "z"), errors, kwargs)
+    """)
 
 
-def carlson_rd(x, y, z, *, errors: str = "raise", **kwargs):
+carlson_rd = _kernel_function(
+    "carlson_rd", ('x', 'y', 'z'),
     """Carlson's R_D(x, y, z) = R_J(x, y, z, z) = 3/2 int_0^inf dt / ((t+z) sqrt((t+x)(t+y)(t+z))).
 
     Parameters
@@ -304,15 +383,11 @@ def carlson_rd(x, y, z, *, errors: str = "raise", **kwargs):
     >>> import gecko
     >>> round(float(gecko.carlson_rd(0.0, 2.0, 1.0)), 13)     # Carlson's test value
     1.7972103521034
-    """
-    if type(x) is float and type(y) is float and type(z) is float and errors == "raise" and not kwargs:
-        return _carlson_rd_scalar(x, y, z, 0)
-    if not kwargs and type(x) in _S and type(y) in _S and type(z) in _S and errors in _CODES:
-        return _carlson_rd_scalar(x, y, z, _CODES[errors])
-    return _ufunc_call(ufuncs.carlson_rd, _core.carlson_rd_scalar, (x, y, z), ("x", "y", "z"), errors, kwargs)
+    """)
 
 
-def carlson_rj(x, y, z, p, *, errors: str = "raise", **kwargs):
+carlson_rj = _kernel_function(
+    "carlson_rj", ('x', 'y', 'z', 'p'),
     """Carlson's R_J(x, y, z, p) = 3/2 int_0^inf dt / ((t+p) sqrt((t+x)(t+y)(t+z))).
 
     Parameters
@@ -343,15 +418,11 @@ def carlson_rj(x, y, z, p, *, errors: str = "raise", **kwargs):
     >>> import gecko
     >>> round(float(gecko.carlson_rj(2.0, 3.0, 4.0, 5.0)), 14)  # Carlson's test value
     0.14297579667157
-    """
-    if type(x) is float and type(y) is float and type(z) is float and type(p) is float and errors == "raise" and not kwargs:
-        return _carlson_rj_scalar(x, y, z, p, 0)
-    if not kwargs and type(x) in _S and type(y) in _S and type(z) in _S and type(p) in _S and errors in _CODES:
-        return _carlson_rj_scalar(x, y, z, p, _CODES[errors])
-    return _ufunc_call(ufuncs.carlson_rj, _core.carlson_rj_scalar, (x, y, z, p), ("x", "y", "z", "p"), errors, kwargs)
+    """)
 
 
-def carlson_rc(x, y, *, errors: str = "raise", **kwargs):
+carlson_rc = _kernel_function(
+    "carlson_rc", ('x', 'y'),
     """Carlson's R_C(x, y) = R_F(x, y, y) = 1/2 int_0^inf dt / ((t+y) sqrt(t+x)).
 
     Parameters
@@ -382,9 +453,4 @@ def carlson_rc(x, y, *, errors: str = "raise", **kwargs):
     >>> import math, gecko
     >>> bool(math.isclose(gecko.carlson_rc(0.0, 0.25), math.pi, rel_tol=1e-15))
     True
-    """
-    if type(x) is float and type(y) is float and errors == "raise" and not kwargs:
-        return _carlson_rc_scalar(x, y, 0)
-    if not kwargs and type(x) in _S and type(y) in _S and errors in _CODES:
-        return _carlson_rc_scalar(x, y, _CODES[errors])
-    return _ufunc_call(ufuncs.carlson_rc, _core.carlson_rc_scalar, (x, y), ("x", "y"), errors, kwargs)
+    """)

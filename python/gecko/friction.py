@@ -1076,6 +1076,12 @@ class ParametricLaw:
         The parameters by name, with their values (the starting values of a fit).
     positive : tuple of str, optional
         Parameters that must stay positive (fitted as logarithms); default: all of them.
+    bounds : dict, optional
+        ``{name: (lower, upper)}`` (either may be None or +-inf): a fit keeps the parameter
+        strictly inside, fitting ``log((p - lo)/(hi - p))`` (both finite), ``log(p - lo)`` or
+        ``log(hi - p)``; a bounded parameter is not also taken as positive. Its standard error is
+        mapped by the derivative of that transform; where the fit ends at a bound it is NaN and
+        the fit's ``reason`` says so.
 
     Examples
     --------
@@ -1091,6 +1097,7 @@ class ParametricLaw:
     func: Callable
     params: dict
     positive: Optional[tuple] = None
+    bounds: Optional[dict] = None
 
     def __call__(self, V):
         return self.func(V, **self.params)
@@ -1181,8 +1188,136 @@ def _sigma_array(s, n, name):
 
 
 
+def _fit_data(V, F_par, F_perp):
+    """The three data arrays, flat float64, after the checks a fit needs (same shape, no
+    broadcasting; finite forces, 0 <= V < inf), each error naming the argument and element."""
+    arrays = [_real_array(a, name) for a, name in ((V, "V"), (F_par, "F_par"), (F_perp, "F_perp"))]
+    for a, name in zip(arrays[1:], ("F_par", "F_perp")):
+        if a.shape != arrays[0].shape:
+            raise ValueError(f"gecko.fit_steady_sliding: {name} has shape {a.shape} and V has shape "
+                             f"{arrays[0].shape}: need one measured force per velocity")
+    out = [np.ascontiguousarray(a, dtype=np.float64).reshape(-1) for a in arrays]
+    for a, name, need in ((out[0], "V", "0 <= V < inf (drag velocity)"),
+                          (out[1], "F_par", "finite measured forces"),
+                          (out[2], "F_perp", "finite measured forces")):
+        bad = ~np.isfinite(a) if name != "V" else ~((a >= 0) & np.isfinite(a))
+        if np.any(bad):
+            i = int(np.flatnonzero(bad)[0])
+            raise ValueError(f"gecko.fit_steady_sliding: {name}[{i}] = {float(a[i])!r} is out of range: "
+                             f"need {need}")
+    return out
+
+
+class _Bounds:
+    """Bounds of a ParametricLaw's parameters and the transforms that keep a fit inside them:
+    p = lo + (hi - lo)/(1 + exp(-t)) (both finite), lo + exp(t), hi - exp(t)."""
+
+    def __init__(self, bounds, names, start):
+        self.names, self.box = list(names), {}
+        if bounds is None:
+            self.bounded = ()
+            return
+        if not isinstance(bounds, dict):
+            raise ValueError(f"guess.law.bounds = {bounds!r} is not allowed: need a dict {{name: (lower, upper)}}")
+        for k, b in bounds.items():
+            if k not in self.names:
+                raise ValueError(f"guess.law.bounds names an unknown parameter {k!r}; parameters: "
+                                 + ", ".join(self.names))
+            if not (isinstance(b, (tuple, list)) and len(b) == 2):
+                raise ValueError(f"guess.law.bounds[{k!r}] = {b!r} is not allowed: need (lower, upper)")
+            lo = -math.inf if b[0] is None else _scalar(b[0], f"guess.law.bounds[{k!r}][0]")
+            hi = math.inf if b[1] is None else _scalar(b[1], f"guess.law.bounds[{k!r}][1]")
+            if math.isnan(lo) or math.isnan(hi) or not lo < hi or lo == math.inf or hi == -math.inf:
+                raise ValueError(f"guess.law.bounds[{k!r}] = ({lo!r}, {hi!r}) is out of range: need "
+                                 "lower < upper (either may be infinite)")
+            p0 = start[self.names.index(k)]
+            if not lo < p0 < hi:
+                raise ValueError(f"guess.law.params[{k!r}] = {p0!r} is out of range: need a start strictly "
+                                 f"inside its bounds ({lo!r}, {hi!r})")
+            if math.isfinite(lo) or math.isfinite(hi):
+                self.box[k] = (lo, hi)
+        self.bounded = tuple(self.box)
+
+    def _forward(self, k, t):
+        lo, hi = self.box[k]
+        if math.isfinite(lo) and math.isfinite(hi):
+            return lo + (hi - lo) / (1.0 + math.exp(-t)) if t > -700 else lo
+        return lo + math.exp(t) if math.isfinite(lo) else hi - math.exp(t)
+
+    def _slope(self, k, p):
+        lo, hi = self.box[k]
+        if math.isfinite(lo) and math.isfinite(hi):
+            return (p - lo) * (hi - p) / (hi - lo)
+        return p - lo if math.isfinite(lo) else -(hi - p)
+
+    def coordinates(self, start):
+        out = []
+        for k, p in zip(self.names, start):
+            if k not in self.box:
+                out.append(p)
+                continue
+            lo, hi = self.box[k]
+            out.append(math.log((p - lo) / (hi - p)) if math.isfinite(lo) and math.isfinite(hi)
+                       else math.log(p - lo) if math.isfinite(lo) else math.log(hi - p))
+        return out
+
+    def values(self, t):
+        return [self._forward(k, float(x)) if k in self.box else float(x) for k, x in zip(self.names, t)]
+
+    def map_result(self, r):
+        """The C++ result in the transformed coordinates -> the parameters (delta method)."""
+        vals = list(r["values"])
+        d = np.ones(len(vals))
+        at_bound = []
+        for j, name in enumerate(r["names"]):
+            if name not in self.box:
+                continue
+            t = vals[j]
+            p = self._forward(name, t)
+            d[j] = self._slope(name, p)
+            vals[j] = p
+            lo, hi = self.box[name]
+            for side in ("profile_lower", "profile_upper"):
+                tb = r[side][j]
+                r[side][j] = (tb if math.isnan(tb) else lo if tb == -math.inf and d[j] > 0
+                              else hi if tb == -math.inf else hi if tb == math.inf and d[j] > 0
+                              else lo if tb == math.inf else self._forward(name, tb))
+            if r["profile_lower"][j] > r["profile_upper"][j]:
+                r["profile_lower"][j], r["profile_upper"][j] = r["profile_upper"][j], r["profile_lower"][j]
+            span = (hi - lo) if math.isfinite(hi - lo) else max(abs(p), 1.0)
+            if abs(d[j]) <= 1e-9 * span:  # the transform is flat: the fit sits on the bound
+                at_bound.append(name)
+        cov = np.asarray(r["covariance"]) * np.outer(d, d)
+        se = np.abs(np.asarray(r["standard_errors"]) * d)
+        for name in at_bound:
+            se[r["names"].index(name)] = float("nan")
+        r["values"], r["covariance"], r["standard_errors"] = vals, cov, list(se)
+        if at_bound:
+            r["reason"] = (r["reason"] + "; " + ", ".join(at_bound) + " ended at a bound: its standard "
+                           "error is not defined (NaN)")
+
+
+def _check_law_at_start(G, V, values):
+    """A ParametricLaw must give one finite G per velocity at its starting values: otherwise the
+    fit could not start; say so naming the law rather than failing inside the solver."""
+    try:
+        with np.errstate(all="ignore"):
+            g = np.asarray(G(V, values), dtype=np.float64)
+    except Exception as exc:  # noqa: BLE001 - reported with the law named
+        raise ValueError(f"guess.law: calling the law at its starting parameters raised "
+                         f"{type(exc).__name__}: {exc}") from exc
+    if g.shape != V.shape:
+        raise ValueError(f"guess.law returns shape {g.shape} for {V.size} velocities: need one G "
+                         "per velocity (a numpy-vectorised function)")
+    bad = ~np.isfinite(g)
+    if np.any(bad):
+        i = int(np.flatnonzero(bad)[0])
+        raise ValueError(f"guess.law gives G = {float(g[i])!r} at V[{i}] = {float(V[i])!r} with its "
+                         "starting parameters: need a finite G at every measured velocity")
+
+
 def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC, *,
-                       fit_f_par1: bool = True, fit_f_perp1: bool = True,
+                       fit_f_par1: Optional[bool] = None, fit_f_perp1: bool = True,
                        fit_coupling: bool = False, max_iterations: int = 200,
                        sigma=None, absolute_sigma: Optional[bool] = None, profile: bool = False,
                        profile_level: float = 0.6826894921370859,
@@ -1207,8 +1342,15 @@ def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC
         Velocities and the two mean forces, same length, more data than parameters.
     guess : SlidingModel, optional
         Starting model; its law (viscoelastic, Eyring or a ParametricLaw) is the one fitted.
-    fit_f_par1, fit_f_perp1, fit_coupling : bool, optional
-        Free the force offsets (default True) and the coupling K[0,1] (default False).
+    fit_f_par1 : bool or None, optional
+        Free f_par1. Default (None): free when the guess law has G(0) = 0 (Eyring: the
+        low-speed lateral force is N f_par1 alone), held at ``guess.f_par1`` when G(0) > 0
+        (viscoelastic: the plateau N sqrt(K G0/2) and f_par1 both set the low-speed force and
+        only the curvature of the rise separates them; on Fig 6 data at 25 speeds and 0.5 mN
+        noise its standard error exceeds the whole plateau / N, and 1 fit in 8 ends at the
+        degenerate V* -> 0). ``names`` lists what was fitted.
+    fit_f_perp1, fit_coupling : bool, optional
+        Free f_perp1 (default True) and the coupling K[0,1] (default False).
     max_iterations : int, optional
         Default 200.
     sigma : tuple of (float or array_like), optional
@@ -1230,8 +1372,10 @@ def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC
     Raises
     ------
     ValueError
-        If the data are not finite, of different lengths or too few, sigma is not positive, or
-        the law cannot be fitted.
+        If the data are not finite (the message names the array and element), of different
+        shapes or too few, V < 0, sigma is not positive and finite, a flag is not a bool, or the
+        law cannot be fitted (a ParametricLaw that raises, returns the wrong shape or a
+        non-finite G at its starting values).
 
     Examples
     --------
@@ -1244,7 +1388,13 @@ def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC
     """
     from statistics import NormalDist
 
-    shape, (v, fp, fq) = _flat_args((V, F_par, F_perp))
+    v, fp, fq = _fit_data(V, F_par, F_perp)
+    for flag, name in ((fit_f_par1, "fit_f_par1"), (fit_f_perp1, "fit_f_perp1"),
+                       (fit_coupling, "fit_coupling"), (profile, "profile"),
+                       (absolute_sigma, "absolute_sigma")):
+        if not (isinstance(flag, (bool, np.bool_)) or (flag is None and name in ("fit_f_par1", "absolute_sigma"))):
+            raise ValueError(f"{name} = {flag!r} is not allowed: need True or False"
+                             + (" (or None: automatic)" if name == "fit_f_par1" else ""))
     if not isinstance(guess, SlidingModel):
         raise ValueError(f"guess = {guess!r} is not allowed: need a SlidingModel")
     law = guess.law
@@ -1263,14 +1413,31 @@ def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC
         if unknown:
             raise ValueError(f"guess.law.positive names unknown parameters {sorted(unknown)}")
         func = law.func
+        start = [_scalar(law.params[k], f"guess.law.params[{k!r}]") for k in names]
+        box = _Bounds(law.bounds, names, start)
+        positive = tuple(k for k in positive if k not in box.bounded)
 
         def G(Vv, pv, _names=names, _func=func):
             return np.asarray(_func(Vv, **dict(zip(_names, map(float, pv)))), dtype=np.float64)
 
-        custom = dict(custom_G=G, custom_names=names,
-                      custom_values=[_scalar(law.params[k], f"guess.law.params[{k!r}]")
-                                     for k in names],
+        _check_law_at_start(G, v, start)
+
+        def Gt(Vv, tv, _G=G):  # the solver's coordinates: bounded parameters transformed
+            return _G(Vv, box.values(tv))
+
+        custom = dict(custom_G=Gt if box.bounded else G, custom_names=names,
+                      custom_values=box.coordinates(start),
                       custom_positive=[k in positive for k in names])
+        if fit_f_par1 is None:
+            # the automatic choice of the C++ fit, decided here: a law that fails at V = 0
+            # (log V, 1/V) has no finite plateau and f_par1 is fitted
+            try:
+                with np.errstate(all="ignore"):
+                    g0 = float(np.asarray(G(np.zeros(1), start),
+                                          dtype=np.float64).reshape(-1)[0])
+            except Exception:  # noqa: BLE001 - any failure means "no finite G(0)"
+                g0 = float("nan")
+            fit_f_par1 = not (math.isfinite(g0) and g0 > 0)
     else:
         raise ValueError("guess.law must be a ViscoelasticDetachment, an EyringDetachment or a "
                          "ParametricLaw (a callable with named parameters)")
@@ -1290,10 +1457,13 @@ def fit_steady_sliding(V, F_par, F_perp, guess: SlidingModel = FIG6_VISCOELASTIC
     r = _core.fit_steady_sliding(v, fp, fq, float(guess.N), _matrix(guess.K), float(guess.f_par1),
                                  float(guess.f_perp1), kind,
                                  float(getattr(law, "G0", 1.0)), float(getattr(law, "V_star", 1.0)),
-                                 n, bool(fit_f_par1), bool(fit_f_perp1), bool(fit_coupling),
+                                 n, None if fit_f_par1 is None else bool(fit_f_par1), bool(fit_f_perp1),
+                                 bool(fit_coupling),
                                  max_iterations, sp, sq, known,
                                  bool(profile), float(delta),
                                  float(max_condition), **custom)
+    if kind == 2 and box.bounded:
+        box.map_result(r)
     values = dict(zip(r["names"], r["values"]))
     if kind == 0:
         new_law = ViscoelasticDetachment(values["G0"], values["V_star"], values["n"])

@@ -29,7 +29,7 @@ __all__ = [
     "FN_LABEL", "FT_LABEL", "FORCE_SPACE_XLIM", "FORCE_SPACE_YLIM",
     "force_space_axes", "critical_line", "seta_critical_line", "fiber_critical_line",
     "kendall_line", "rivlin_line", "linear_line", "characteristic", "deformed_shapes",
-    "force_trace", "force_space", "steady_sliding", "sensitivities",
+    "force_trace", "force_space", "steady_sliding", "sensitivities", "sliding_fit",
 ]
 
 FN_LABEL = r"$\bar F_n = F_n/w$"
@@ -677,6 +677,69 @@ def contact_contours(ax, Fn, Ft, a, *, status=None, levels=9, l2_over_l1: Option
     return cs
 
 
+# ---- a fit of the steady-sliding model to measured data (gecko.scene.sliding_fit) ----------------
+
+def sliding_fit(axes, curves, *, xscale: str = "log", velocity_unit: float = 1e-6):
+    """Draw measured steady-sliding forces, the fitted eqs 9-10 and the residuals.
+
+    Parameters
+    ----------
+    axes : sequence of three matplotlib.axes.Axes
+        Lateral force, normal force, residuals.
+    curves : sequence of gecko.scene.Curve
+        From a ``sliding_fit`` plot: roles ``data_par``/``data_perp`` (points, with error bars
+        where ``meta["sigma"]`` is given), ``fit_par``/``fit_perp`` (lines), ``res_par``/``res_perp``.
+    xscale : str, optional
+        Velocity axis scale (default "log").
+    velocity_unit : float, optional
+        Unit of the velocity axis in m/s (default 1e-6: µm/s).
+
+    Returns
+    -------
+    list
+        The artists drawn.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from matplotlib.figure import Figure
+    >>> from gecko.scene import Curve
+    >>> import gecko.plot as gp
+    >>> V = np.array([1e-6, 1e-5, 1e-4])
+    >>> cs = [Curve("s", "data", V, V * 0 + 0.03, "V", "F_par", "data_par", panel=0),
+    ...       Curve("s", "fit", V, V * 0 + 0.03, "V", "F_par", "fit_par", panel=0),
+    ...       Curve("s", "lateral", V, V * 0, "V", "residual", "res_par", panel=2)]
+    >>> len(gp.sliding_fit(Figure().subplots(1, 3), cs))
+    3
+    """
+    unit = "µm/s" if velocity_unit == 1e-6 else f"{velocity_unit:g} m/s"
+    colors: dict = {}
+    arts = []
+    for c in curves:
+        ax = axes[c.panel]
+        x = np.asarray(c.x, dtype=np.float64) / velocity_unit
+        color = colors.setdefault((c.study, c.role[-3:] if c.panel == 2 else ""), f"C{len(colors)}")
+        if c.role.startswith("data"):
+            sigma = c.meta.get("sigma")
+            if sigma is not None:
+                arts.append(ax.errorbar(x, c.y, yerr=sigma, fmt="o", ms=3.5, color="0.25",
+                                        elinewidth=0.8, label=c.label))
+            else:
+                arts += ax.plot(x, c.y, "o", ms=3.5, color="0.25", label=c.label)
+        elif c.role.startswith("fit"):
+            arts += ax.plot(x, c.y, "-", linewidth=1.6, color="C0", label=c.label)
+        else:
+            arts += ax.plot(x, c.y, "o-" if c.role == "res_par" else "s--", ms=3, linewidth=0.8,
+                            color=color, label=c.label)
+    names = (r"shear force $\bar F_\parallel$ (N)", r"normal force $\bar F_\perp$ (N)",
+             "residual, data − fit (N)")
+    for ax, name in zip(axes, names):
+        ax.set_xlabel(f"drag velocity $V$ ({unit})")
+        ax.set_ylabel(name)
+        ax.set_xscale(xscale)
+        ax.grid(True, which="both", linewidth=0.4, alpha=0.5)
+    axes[2].axhline(0.0, color="0.4", linewidth=0.8, zorder=0)
+    return arts
 # ---- the hierarchy of paper 000's Discussion (gecko.plot_hierarchy) -----------------------------
 from .plot_hierarchy import compliant_seta_trace, population_forces, stick_slip_map  # noqa: E402
 

@@ -440,7 +440,7 @@ void bind_friction(py::module_& m) {
   // (GIL held: the law is called from the solver).
   m.def("fit_steady_sliding", [](const darray& V, const darray& F_par, const darray& F_perp,
                                  double N, const darray& K, double f_par1, double f_perp1,
-                                 int kind, double G0, double V_star, double n, bool fit_f_par1,
+                                 int kind, double G0, double V_star, double n, py::object fit_f_par1,
                                  bool fit_f_perp1, bool fit_coupling, int max_iterations,
                                  py::object sigma_par, py::object sigma_perp, bool absolute_sigma,
                                  bool profile, double profile_delta, double max_condition,
@@ -452,7 +452,8 @@ void bind_friction(py::module_& m) {
     require_equal(m, F_perp, "F_perp");
     const auto p = make_params(N, K, f_par1, f_perp1);
     fit_options<double> opt;
-    opt.fit_f_par1 = fit_f_par1;
+    // None: automatic (fitted iff the guess law has G(0) = 0; see fit_options)
+    if (!fit_f_par1.is_none()) opt.fit_f_par1 = fit_f_par1.cast<bool>();
     opt.fit_f_perp1 = fit_f_perp1;
     opt.fit_coupling = fit_coupling;
     opt.max_iterations = max_iterations;
@@ -530,7 +531,7 @@ void bind_friction(py::module_& m) {
     });
   }, py::arg("V"), py::arg("F_par"), py::arg("F_perp"), py::arg("N"), py::arg("K"),
      py::arg("f_par1"), py::arg("f_perp1"), py::arg("kind"), py::arg("G0"), py::arg("V_star"),
-     py::arg("n"), py::arg("fit_f_par1") = true, py::arg("fit_f_perp1") = true,
+     py::arg("n"), py::arg("fit_f_par1") = py::none(), py::arg("fit_f_perp1") = true,
      py::arg("fit_coupling") = false, py::arg("max_iterations") = 200,
      py::arg("sigma_par") = py::none(), py::arg("sigma_perp") = py::none(),
      py::arg("absolute_sigma") = true, py::arg("profile") = false, py::arg("profile_delta") = 1.0,

@@ -64,9 +64,31 @@ inline const char* to_string(fit_status s) {
   }
 }
 
+// Whether a force offset is fitted: true, false, or (default-constructed) automatic. Assigning a
+// bool (`opt.fit_f_par1 = false`) sets it explicitly.
+class fit_flag {
+ public:
+  constexpr fit_flag() = default;
+  constexpr fit_flag(bool b) : v_(b ? 1 : 0) {}  // NOLINT(google-explicit-constructor): bool-like
+  static constexpr fit_flag automatic() { return fit_flag(); }
+  constexpr bool is_automatic() const { return v_ < 0; }
+  // The explicit choice, or `automatic_choice` when none was made.
+  constexpr bool resolve(bool automatic_choice) const { return v_ < 0 ? automatic_choice : v_ == 1; }
+
+ private:
+  signed char v_ = -1;
+};
+
 template <class T>
 struct fit_options {
-  bool fit_f_par1 = true;
+  // f_par1 by default (automatic): fitted when the guess law has G(0) = 0 (Eyring, eq 8: the
+  // low-speed lateral force is N f_par1 alone), held at the guess when G(0) > 0 (viscoelastic,
+  // eq 7: the plateau N sqrt(K G0 / 2) and f_par1 both set the low-speed force, and only the
+  // curvature of the rise separates them). For Fig 6 at 25 speeds and 0.5 mN noise the standard
+  // error of f_par1 so fitted is 1 to 10 times the whole plateau / N, and in 1 fit of 8 the
+  // least-squares optimum is the degenerate V* -> 0, f_par1 = plateau / N (status
+  // not_identifiable); the paper's viscoelastic fit sets f_par1 = 0. Set it to true to fit it.
+  fit_flag fit_f_par1;
   bool fit_f_perp1 = true;
   bool fit_coupling = false;  // also fit K_perp_par
   int max_iterations = 200;
@@ -323,7 +345,7 @@ lm_result<T> levenberg_marquardt(const Problem& prob, Eigen::Matrix<T, Eigen::Dy
     res.theta = theta;
     res.chi2 = std::numeric_limits<T>::infinity();
     res.status = fit_status::non_finite;
-    res.reason = "the model or chi^2 is not finite at the starting point";
+    res.reason = "the model or chi^2 is not finite (overflow or NaN) at the starting point";
     return res;
   }
   free_cols();
@@ -497,7 +519,18 @@ steady_sliding_fit<T, Law> fit_steady_sliding(const T* V, const T* F_par, const 
         return res;
       }
   }
-  const int p = k + int(opt.fit_f_par1) + int(opt.fit_f_perp1) + int(opt.fit_coupling);
+  // Automatic f_par1 (see fit_options): fitted iff the guess law vanishes at V = 0.
+  bool fit_u = true;
+  if (opt.fit_f_par1.is_automatic()) {
+    const T zero = T(0);
+    T g0 = T(0);
+    if constexpr (std::is_same_v<Law, custom_detachment<T>>) guess_law.G(&zero, 1, guess_law.values.data(), &g0);
+    else g0 = static_cast<T>(guess_law(zero));
+    fit_u = !(isfinite(g0) && g0 > T(0));
+  } else {
+    fit_u = opt.fit_f_par1.resolve(true);
+  }
+  const int p = k + int(fit_u) + int(opt.fit_f_perp1) + int(opt.fit_coupling);
   if (2 * n <= std::size_t(p)) {
     raise_domain_error<T, Policy>(function, "len(V)", T(n),
                                   "more data than parameters: 2 len(V) > the free parameters");
@@ -513,22 +546,27 @@ steady_sliding_fit<T, Law> fit_steady_sliding(const T* V, const T* F_par, const 
                                   "max_condition > 1 and 0 < profile_delta < inf");
     return res;
   }
+  // Each message names the array and the element: "F_par[3] = nan is out of range".
+  auto element = [](const char* name, std::size_t i) { return std::string(name) + "[" + std::to_string(i) + "]"; };
   for (std::size_t i = 0; i < n; ++i) {
-    if (!detail::check_velocity<T, Policy>(function, V[i])) return res;
+    if (!(V[i] >= T(0) && isfinite(V[i]))) {
+      raise_domain_error<T, Policy>(function, element("V", i).c_str(), V[i], "0 <= V < inf (drag velocity)");
+      return res;
+    }
     if (!isfinite(F_par[i])) {
-      raise_domain_error<T, Policy>(function, "F_par", F_par[i], "finite measured forces");
+      raise_domain_error<T, Policy>(function, element("F_par", i).c_str(), F_par[i], "finite measured forces");
       return res;
     }
     if (!isfinite(F_perp[i])) {
-      raise_domain_error<T, Policy>(function, "F_perp", F_perp[i], "finite measured forces");
+      raise_domain_error<T, Policy>(function, element("F_perp", i).c_str(), F_perp[i], "finite measured forces");
       return res;
     }
     if (opt.sigma_par && !(opt.sigma_par[i] > T(0) && isfinite(opt.sigma_par[i]))) {
-      raise_domain_error<T, Policy>(function, "sigma_par", opt.sigma_par[i], "0 < sigma < inf");
+      raise_domain_error<T, Policy>(function, element("sigma_par", i).c_str(), opt.sigma_par[i], "0 < sigma < inf");
       return res;
     }
     if (opt.sigma_perp && !(opt.sigma_perp[i] > T(0) && isfinite(opt.sigma_perp[i]))) {
-      raise_domain_error<T, Policy>(function, "sigma_perp", opt.sigma_perp[i], "0 < sigma < inf");
+      raise_domain_error<T, Policy>(function, element("sigma_perp", i).c_str(), opt.sigma_perp[i], "0 < sigma < inf");
       return res;
     }
   }
@@ -557,7 +595,7 @@ steady_sliding_fit<T, Law> fit_steady_sliding(const T* V, const T* F_par, const 
     prob.y(Eigen::Index(2 * i + 1)) = prob.wt(Eigen::Index(2 * i + 1)) * (F_perp[i] / S);
   }
   int idx = k;
-  if (opt.fit_f_par1) prob.i_u = idx++;
+  if (fit_u) prob.i_u = idx++;
   if (opt.fit_f_perp1) prob.i_v = idx++;
   if (opt.fit_coupling) prob.i_rho = idx++;
   prob.u0 = N * guess.f_par1 / S;
@@ -639,7 +677,9 @@ steady_sliding_fit<T, Law> fit_steady_sliding(const T* V, const T* F_par, const 
   for (int j = 0; j < p; ++j)  // a positive parameter that underflows to 0 is not finite either
     values_finite = values_finite && isfinite(vals[std::size_t(j)]) &&
                     !(j < k && pos[std::size_t(j)] && !(vals[std::size_t(j)] > T(0)));
-  if (!finite || !isfinite(rss) || !isfinite(res.chi2) || !values_finite) {
+  if (lm.status == fit_status::non_finite) {
+    // keep the solver's reason (e.g. not finite at the starting point)
+  } else if (!finite || !isfinite(rss) || !isfinite(res.chi2) || !values_finite) {
     res.status = fit_status::non_finite;
     res.reason = "the fitted values, chi^2 or rss overflow or are not finite in this precision";
   }

@@ -446,11 +446,10 @@ class ForceTraceAdapter(Adapter):
 
 
 def sliding_model(v):
-    """The gecko.SlidingModel of a design with the steady_sliding model's parameters."""
-    from ..friction import EyringDetachment, SlidingModel, ViscoelasticDetachment
-    law = (ViscoelasticDetachment(v["G0"], v["V_star"], v["n"]) if v["law"] == "viscoelastic"
-           else EyringDetachment(v["G0"], v["V_star"]))
-    return SlidingModel(N=v["N"], K=v["K"], f_par1=v["f_par1"], f_perp1=v["f_perp1"], law=law)
+    """The gecko.SlidingModel of a design with the steady_sliding model's parameters (the law by
+    name or as an expression: gecko.scene.sliding_fit)."""
+    from .sliding_fit import sliding_model as model
+    return model(v)
 
 
 class SteadySlidingAdapter(Adapter):
@@ -474,9 +473,34 @@ class SteadySlidingAdapter(Adapter):
             ex.progress.advance(1, st.name)
 
 
+class SlidingFitAdapter(Adapter):
+    """Measured forces fitted by eqs 9-10 (the work is in gecko.scene.sliding_fit)."""
+    models = ("sliding_fit",)
+
+    def plan(self, st) -> List[Step]:
+        if "fit" not in st.outputs:
+            return []
+        return [Step(st.name, "fit", [p.index for p in st.points], "Levenberg-Marquardt fit of eqs 9-10 (C++)")]
+
+    def k_fit(self, ex, st, step: Step) -> None:
+        from .sliding_fit import run_fit
+        for i in step.points:
+            ex.data[st.name][i]["fit"] = run_fit(st.points[i].values, st.outputs["fit"].options)
+            ex.progress.advance(1, st.name)
+
+    def plot_curves(self, plot, st, rows, many: bool, Curve) -> list:
+        from .sliding_fit import fit_curves
+        return [Curve(**kw) for kw in fit_curves(st, rows, many)] if plot.kind == "sliding_fit" else []
+
+    def study_csv(self, st, rows) -> Dict[str, str]:
+        from .sliding_fit import fit_csv
+        return fit_csv(st, rows)
+
+
 #: model name -> its adapter (every model of gecko.scene.models.MODELS has one)
 ADAPTERS: Dict[str, Adapter] = {name: a for a in (TwoLevelSetaAdapter(), SingleFiberAdapter(), KendallAdapter(),
-                                                  RivlinAdapter(), ForceTraceAdapter(), SteadySlidingAdapter())
+                                                  RivlinAdapter(), ForceTraceAdapter(), SteadySlidingAdapter(),
+                                                  SlidingFitAdapter())
                                 for name in a.models}
 
 

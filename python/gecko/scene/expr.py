@@ -10,7 +10,9 @@ from __future__ import annotations
 import ast
 import functools
 import math
-from typing import Callable, Dict, Iterable, Mapping, Set
+from typing import Any, Callable, Dict, Iterable, Mapping, Set
+
+import numpy as np
 
 from .errors import SceneError
 
@@ -43,11 +45,12 @@ def _parse(text: str, key: str) -> ast.Expression:
 
 
 @functools.lru_cache(maxsize=1024)
-def _checked(text: str):
+def _checked(text: str, functions: str = "scalar"):
     """(tree, None) for an allowed expression, else (None, why); cached: a sweep re-evaluates the
-    same few expressions for every design."""
+    same few expressions for every design. ``functions``: "scalar" (FUNCTIONS) or "array"
+    (ARRAY_FUNCTIONS, for a law G(V) evaluated on arrays)."""
     try:
-        return _check(text), None
+        return _check(text, functions=ARRAY_FUNCTIONS if functions == "array" else FUNCTIONS), None
     except SceneError as err:
         return None, err.reason
 
@@ -63,7 +66,7 @@ def _depth(node: ast.AST) -> int:
     return deepest
 
 
-def _check(text: str, key: str = "") -> ast.Expression:
+def _check(text: str, key: str = "", functions: Mapping[str, Callable] = FUNCTIONS) -> ast.Expression:
     if len(text) > MAX_EXPRESSION_CHARS:
         raise SceneError(f"the expression {text[:40]!r}... is {len(text)} characters long; at most "
                          f"{MAX_EXPRESSION_CHARS} are allowed", key=key)
@@ -72,7 +75,7 @@ def _check(text: str, key: str = "") -> ast.Expression:
     except (SyntaxError, ValueError, RecursionError, MemoryError):
         # ValueError: null bytes on older Pythons; RecursionError/MemoryError: parser limits
         raise SceneError(f"cannot read the expression {text!r}: allowed are numbers, names, "
-                         "+ - * / ** ( ) and " + ", ".join(sorted(FUNCTIONS)), key=key) from None
+                         "+ - * / ** ( ) and " + ", ".join(sorted(functions)), key=key) from None
     if _depth(tree) > MAX_EXPRESSION_DEPTH:
         raise SceneError(f"the expression {text!r} is nested more than {MAX_EXPRESSION_DEPTH} levels deep",
                          key=key)
@@ -85,12 +88,12 @@ def _check(text: str, key: str = "") -> ast.Expression:
             ok = False
         if isinstance(node, ast.UnaryOp) and type(node.op) not in _UNARY:
             ok = False
-        if isinstance(node, ast.Call) and not (isinstance(node.func, ast.Name) and node.func.id in FUNCTIONS
+        if isinstance(node, ast.Call) and not (isinstance(node.func, ast.Name) and node.func.id in functions
                                                and not node.keywords):
             ok = False
         if not ok:
             raise SceneError(f"the expression {text!r} uses something not allowed: only numbers, "
-                             "names, + - * / ** ( ) and the functions " + ", ".join(sorted(FUNCTIONS)),
+                             "names, + - * / ** ( ) and the functions " + ", ".join(sorted(functions)),
                              key=key)
     return tree
 
@@ -108,31 +111,40 @@ def _names(text: str) -> frozenset:
     return frozenset({n.id for n in ast.walk(tree) if isinstance(n, ast.Name)} - called - set(CONSTANTS))
 
 
-def evaluate(text: str, env: Mapping[str, float] = {}, key: str = "",
-             allowed: Iterable[str] = ()) -> float:
-    """Value of the expression ``text`` with the names in ``env`` (and pi, inf, e)."""
-    tree = _parse(text, key)
-
+def _evaluator(text: str, key: str, name: Callable, call: Callable) -> Callable:
+    """The recursive evaluator of a checked tree: ``name(id)`` gives a name's value,
+    ``call(function, args)`` applies an allowed function."""
     def ev(node):
         if isinstance(node, ast.Expression):
             return ev(node.body)
         if isinstance(node, ast.Constant):
             return float(node.value)
         if isinstance(node, ast.Name):
-            if node.id in env:
-                return float(env[node.id])
-            if node.id in CONSTANTS:
-                return CONSTANTS[node.id]
-            names = sorted(set(CONSTANTS) | set(allowed) | set(env))
-            raise SceneError(f"unknown name {node.id!r} in {text!r}; allowed names: " + ", ".join(names),
-                             key=key)
+            return name(node.id)
         if isinstance(node, ast.BinOp):
             return _BINOPS[type(node.op)](ev(node.left), ev(node.right))
         if isinstance(node, ast.UnaryOp):
             return _UNARY[type(node.op)](ev(node.operand))
         if isinstance(node, ast.Call):
-            return float(FUNCTIONS[node.func.id](*(ev(a) for a in node.args)))
-        raise SceneError(f"cannot evaluate {text!r}", key=key)  # unreachable after _parse
+            return call(node.func.id, [ev(a) for a in node.args])
+        raise SceneError(f"cannot evaluate {text!r}", key=key)  # unreachable after the check
+    return ev
+
+
+def evaluate(text: str, env: Mapping[str, float] = {}, key: str = "",
+             allowed: Iterable[str] = ()) -> float:
+    """Value of the expression ``text`` with the names in ``env`` (and pi, inf, e)."""
+    tree = _parse(text, key)
+
+    def name(n):
+        if n in env:
+            return float(env[n])
+        if n in CONSTANTS:
+            return CONSTANTS[n]
+        names = sorted(set(CONSTANTS) | set(allowed) | set(env))
+        raise SceneError(f"unknown name {n!r} in {text!r}; allowed names: " + ", ".join(names), key=key)
+
+    ev = _evaluator(text, key, name, lambda f, args: float(FUNCTIONS[f](*args)))
 
     try:
         return ev(tree)
@@ -140,3 +152,43 @@ def evaluate(text: str, env: Mapping[str, float] = {}, key: str = "",
         raise
     except (ArithmeticError, ValueError, TypeError) as exc:
         raise SceneError(f"cannot evaluate {text!r}: {exc}", key=key) from None
+
+
+# ---- expressions over arrays (a detachment law G(V) in a scene) ---------------------------------
+
+#: numpy counterparts of FUNCTIONS, plus asinh (the Eyring law, paper 000 eq 8), tanh and log1p
+ARRAY_FUNCTIONS: Dict[str, Callable] = {
+    "sqrt": np.sqrt, "sin": np.sin, "cos": np.cos, "tan": np.tan, "exp": np.exp, "log": np.log,
+    "log10": np.log10, "abs": np.abs, "min": np.minimum, "max": np.maximum, "asinh": np.arcsinh,
+    "tanh": np.tanh, "log1p": np.log1p,
+}
+
+
+def array_names(text: str, key: str = "") -> Set[str]:
+    """The free names of an array expression (checked against ARRAY_FUNCTIONS)."""
+    tree, reason = _checked(text, "array")
+    if reason:
+        raise SceneError(reason, key=key)
+    called = {n.func.id for n in ast.walk(tree) if isinstance(n, ast.Call)}
+    return {n.id for n in ast.walk(tree) if isinstance(n, ast.Name)} - called - set(CONSTANTS)
+
+
+def evaluate_array(text: str, env: Mapping[str, Any], key: str = ""):
+    """Value of the array expression ``text`` (numpy broadcasting over the arrays in ``env``).
+    Only the checked operators and ARRAY_FUNCTIONS run: a scene never executes code."""
+    tree, reason = _checked(text, "array")
+    if reason:
+        raise SceneError(reason, key=key)
+
+    def name(n):
+        if n in env:
+            return env[n]
+        if n in CONSTANTS:
+            return CONSTANTS[n]
+        raise SceneError(f"unknown name {n!r} in {text!r}; allowed names: "
+                         + ", ".join(sorted(set(env) | set(CONSTANTS))), key=key)
+
+    ev = _evaluator(text, key, name, lambda f, args: ARRAY_FUNCTIONS[f](*args))
+
+    with np.errstate(all="ignore"):  # a NaN or inf is reported by the caller, with the key
+        return np.asarray(ev(tree), dtype=np.float64)

@@ -192,7 +192,8 @@ _add(Model(
      Param("K", None, "rigidity matrix of one spatula (N/m)", kind="matrix", symbol="K"),
      Param("f_par1", None, "lateral force just after re-sticking (N)", check=_finite, symbol="f∥,1"),
      Param("f_perp1", None, "normal force just after re-sticking (N)", check=_finite, symbol="f⊥,1"),
-     Param("law", None, "detachment law", kind="choice", choices=("viscoelastic", "eyring"), symbol="law"),
+     Param("law", None, "detachment law: \"viscoelastic\", \"eyring\" or {G = \"expression in V\", parameters = {...}}",
+           kind="law", symbol="law"),
      Param("G0", None, "detachment energy scale (J)", check=_positive, symbol="G₀"),
      Param("V_star", None, "velocity scale V* (m/s)", check=_positive, symbol="V*"),
      Param("n", None, "exponent of the viscoelastic law", check=_positive, symbol="n"),
@@ -310,6 +311,10 @@ def parse_output(model: Model, name: str, value, key: str) -> Optional[OutputSpe
         else:
             levels = _int_in(levels, f"{key}.levels", 1, 50)
         return OutputSpec(name, {"Fn": fn, "Ft": ft, "levels": levels})
+    if name == "fit":
+        from .sliding_fit import parse_fit_output
+        opts = parse_fit_output(value, key)
+        return None if opts is None else OutputSpec(name, opts)
     if name == "force_trace":
         table = _bool_or_table(value, key, ["samples_per_segment"])
         if table is None:
@@ -347,3 +352,15 @@ def check_grid(spec, key: str) -> None:
         _int_in(spec["num"], f"{key}.num", 2, 10**7)
         return
     raise SceneError(f"need {GRID_FORMS}; got {_tname(spec)}", key=key)
+
+
+# ---- frictional adhesion fitted to measured data (gecko.scene.sliding_fit) -----------------------
+
+_add(Model(
+    "sliding_fit", "steady sliding fitted to data",
+    (Param("data", None, "CSV file of measured V, F_par, F_perp [, sigma_par, sigma_perp] (SI)",
+           kind="data", symbol="data"),)
+    + tuple(p for p in MODELS["steady_sliding"].params if p.name != "t_off"),
+    ("fit", "csv"),
+    "Eqs 9-10 of paper 000 fitted to measured steady-sliding forces (gecko.fit_steady_sliding); "
+    "the other parameters are the start of the fit."))

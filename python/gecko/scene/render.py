@@ -32,6 +32,17 @@ _SYMBOLS = {"ratio": r"$EI_2/EI_1$", "EI2": r"$EI_2/(w l_1^2)$", "alpha2": r"$\a
 PLOT_RENDERERS: Dict[str, Callable] = {}
 
 
+def _render_sliding_fit(fig, plot, curves):
+    """Data, fit and residuals of a sliding_fit study (three panels; gecko.plot.sliding_fit)."""
+    from .. import plot as gp
+    axes = list(fig.subplots(1, 3))
+    gp.sliding_fit(axes, curves, xscale=plot.options.get("xscale", "log"))
+    return axes
+
+
+PLOT_RENDERERS["sliding_fit"] = (_render_sliding_fit, (13.0, 4.2))
+
+
 def render_plot(scene, plot, curves, folder: Path, formats: Sequence[str]) -> List[str]:
     from .. import plot as gp
     opts = plot.options

@@ -54,6 +54,7 @@ PLOT_KINDS = {
     "force_space": ("force_trace",),
     "steady_sliding": ("forces",),
     "contact_contours": ("contact_contours",),
+    "sliding_fit": ("fit",),
 }
 FORMATS = ("png", "svg", "pdf")
 
@@ -187,6 +188,8 @@ def default_title(study: Study, point: Point) -> str:
         return f"single-level, $EI/(wl^2)$ = {_fmt('EI', v['EI'] / (v['w'] * v['l'] ** 2))}"
     if m == "steady_sliding":
         return f"{v['preset']} fit" if study.name == study.model.name else study.name
+    if m == "sliding_fit":
+        return study.name
     return study.name if study.name != m else study.model.title
 
 
@@ -315,7 +318,7 @@ def _parse(data, resolution_override, base_dir: Optional[str] = None) -> Scene:
         raise SceneError("need one or more [[study]] tables", key="study")
     studies = []
     for i, s in enumerate(studies_raw):
-        studies.append(_parse_study(s, f"study[{i}]", res))
+        studies.append(_parse_study(s, f"study[{i}]", res, base_dir))
     names = [s.name for s in studies]
     for i, n in enumerate(names):
         if names.index(n) != i:
@@ -342,7 +345,7 @@ def _parse(data, resolution_override, base_dir: Optional[str] = None) -> Scene:
     return Scene(title, description, res, studies, plots, sweep=sweep, optimize=optimize)
 
 
-def _parse_study(s, key: str, res: float) -> Study:
+def _parse_study(s, key: str, res: float, base_dir: Optional[str] = None) -> Study:
     if not isinstance(s, dict):
         raise SceneError(f"need a table; got {_tname(s)}", key=key)
     _check_keys(s, STUDY_KEYS, key)
@@ -377,7 +380,7 @@ def _parse_study(s, key: str, res: float) -> Study:
         if k in allowed or k in expr.CONSTANTS or k in expr.FUNCTIONS or not k.isidentifier():
             raise SceneError(f"variable name {k!r} is not allowed: it must be an identifier that is not a "
                              "parameter, constant or function name", key=f"{key}.variables.{k}")
-    points, swept = _expand(model, params, variables, combine, key, res)
+    points, swept = _expand(model, params, variables, combine, key, res, base_dir)
     outputs: Dict[str, OutputSpec] = {}
     out_raw = s.get("outputs", {})
     if not isinstance(out_raw, dict):
@@ -426,7 +429,8 @@ def _check_grid_values(study: Study, output: str, g: np.ndarray, p: Point, key: 
                              f"{env['ft_max']:g} for this design", key=key)
 
 
-def _expand(model: Model, params: dict, variables: dict, combine: str, key: str, res: float):
+def _expand(model: Model, params: dict, variables: dict, combine: str, key: str, res: float,
+            base_dir: Optional[str] = None):
     """All designs of a study: sweeps (zip or cross), then expressions, then range checks."""
     sweeps: Dict[str, list] = {}
     fixed: Dict[str, Any] = {}
@@ -469,6 +473,9 @@ def _expand(model: Model, params: dict, variables: dict, combine: str, key: str,
                 fixed[n] = _matrix(v, k)
         elif kind == "path":
             fixed[n] = _path(v, k)
+        elif kind in ("law", "data"):  # gecko.scene.sliding_fit
+            from .sliding_fit import parse_data, parse_law
+            fixed[n] = parse_law(v, k) if kind == "law" else parse_data(v, k, base_dir)
     names = list(sweeps)
     if combine == "zip" and names:
         lens = {n: len(sweeps[n]) for n in names}
@@ -492,7 +499,8 @@ def _expand(model: Model, params: dict, variables: dict, combine: str, key: str,
         pending = dict(exprs)
         pending.update(sw_exprs)
         for p in model.params:
-            if p.name not in vals and p.name not in pending and p.kind in ("float", "choice", "matrix", "path"):
+            if p.name not in vals and p.name not in pending and p.kind in ("float", "choice", "matrix", "path",
+                                                                            "law", "data"):
                 if p.default is not None or p.kind != "float":
                     vals[p.name] = p.default
                 else:

@@ -1,0 +1,29 @@
+// AVX-512F (8 doubles) instance of the SIMD elliptic loops (elliptic_simd_kernels.hpp), compiled
+// with -mavx512f -ffp-contract=off (src/bindings/CMakeLists.txt); called only where the CPU has it.
+#include "elliptic_simd.hpp"
+
+#if defined(GECKO_SIMD_X86)
+#include <immintrin.h>
+
+namespace gecko {
+namespace bindings {
+namespace simd_avx512 {
+struct pack {
+  using vd = __m512d;
+  typedef long long vi __attribute__((vector_size(64)));
+  static constexpr int W = 8;
+  // maskz form: GCC 12 warns about the undefined pass-through operand of _mm512_sqrt_pd
+  static vd sqrt(vd x) { return _mm512_maskz_sqrt_pd(0xff, x); }
+  static bool any(vi m) { return _mm512_test_epi64_mask((__m512i)m, (__m512i)m) != 0; }
+};
+}  // namespace simd_avx512
+}  // namespace bindings
+}  // namespace gecko
+
+#define GECKO_SIMD_NS simd_avx512
+#include "elliptic_simd_kernels.hpp"
+
+const gecko::bindings::simd::kernels* gecko::bindings::simd::kernels_avx512() { return simd_avx512::table(); }
+#else
+const gecko::bindings::simd::kernels* gecko::bindings::simd::kernels_avx512() { return nullptr; }
+#endif
