@@ -28,7 +28,6 @@ Bad input raises ``ValueError`` naming the parameter and its allowed range (or, 
 """
 from __future__ import annotations
 
-import enum
 import math
 from dataclasses import dataclass, field
 from typing import Optional
@@ -279,21 +278,12 @@ class SetaCharacteristics:
     max_pull_off_bound: float = math.nan
 
 
-class ContactStatus(enum.IntEnum):
-    """Status of a contact state (``TwoLevelSeta.contact_state``); the numbers shared with the
-    critical line's ``STATUS`` mean the same."""
-
-    CONVERGED = 0           #: one equilibrium, its contact edge on the spatula (l1 < a <= l1 + l2)
-    NOT_CONVERGED = 1       #: a root could not be refined, or the scan could not decide
-    NO_CONTACT = 2          #: below the critical line: no side contact at this load
-    UNSUPPORTED_STATE = 3   #: outside the model's forms (axial load comparable to EA; l2 longer than
-                            #: one period of the spatula's orbit)
-    BEYOND_JOINT = 4        #: the contact edge would pass the joint onto the beam (outside the model)
-    INVALID_INPUT = 5       #: bad input under ``errors="nan"``
-    SEVERAL_EQUILIBRIA = 6  #: more than one equilibrium (count in ``equilibria``; all of them with
-                            #: ``all_equilibria=True``)
-    INADMISSIBLE = 7        #: equilibria exist but none is admissible: the seta crosses the substrate
-                            #: before the edge, or exceeds ``strain_limit`` (values kept for drawing)
+#: Status of a contact state (``TwoLevelSeta.contact_state``), bound from C++
+#: (gecko/seta/contact_state.hpp, an IntEnum equal to the integers in the result arrays): CONVERGED
+#: (0, one equilibrium with its edge on the spatula), NOT_CONVERGED (1), NO_CONTACT (2, below the
+#: critical line), UNSUPPORTED_STATE (3), BEYOND_JOINT (4, the edge would pass onto the beam),
+#: INVALID_INPUT (5), SEVERAL_EQUILIBRIA (6), INADMISSIBLE (7, values kept for drawing).
+ContactStatus = _core.ContactStatus
 
 
 @dataclass
@@ -563,7 +553,7 @@ class TwoLevelSeta:
             fn_b, ft_b = np.broadcast_arrays(fn_a, ft_a)
         except ValueError:
             raise ValueError(f"contact_state: Fn and Ft do not broadcast (shapes {np.shape(Fn)} and "
-                             f"{np.shape(Ft)})") from None
+                             f"{np.shape(Ft)}): need shapes that broadcast together") from None
         shape = fn_b.shape
         fn = np.ascontiguousarray(fn_b).reshape(-1)
         ft = np.ascontiguousarray(ft_b).reshape(-1)

@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include <pybind11/native_enum.h>
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
@@ -470,6 +471,28 @@ py::dict contact_at(const TwoLevelSeta<double>& s, const darray& Fn, const darra
 }  // namespace
 
 void bind_seta_contact(py::module_& m) {
+  // The statuses of gecko/seta/contact_state.hpp as a Python IntEnum (equal to the integers in the
+  // result arrays); the upper-case names are the package's public ones.
+  py::native_enum<contact_status>(m, "ContactStatus", "enum.IntEnum",
+                                  "Status of a contact state (gecko/seta/contact_state.hpp); the numbers "
+                                  "shared with the critical line's statuses mean the same.")
+      .value("CONVERGED", contact_status::converged,
+             "one equilibrium, its contact edge on the spatula (l1 < a <= l1 + l2)")
+      .value("NOT_CONVERGED", contact_status::not_converged,
+             "a root could not be refined, or the scan could not decide")
+      .value("NO_CONTACT", contact_status::no_contact, "below the critical line: no side contact at this load")
+      .value("UNSUPPORTED_STATE", contact_status::unsupported_state,
+             "outside the model's forms (axial load comparable to EA; l2 longer than one period of the "
+             "spatula's orbit)")
+      .value("BEYOND_JOINT", contact_status::beyond_joint,
+             "the contact edge would pass the joint onto the beam (outside the model)")
+      .value("INVALID_INPUT", contact_status::invalid_input, "bad input under errors='nan'")
+      .value("SEVERAL_EQUILIBRIA", contact_status::several_equilibria,
+             "more than one admissible equilibrium (count in `equilibria`; all of them with all_equilibria=True)")
+      .value("INADMISSIBLE", contact_status::inadmissible,
+             "equilibria exist but none is admissible: the seta crosses the substrate before the edge, or "
+             "exceeds strain_limit (values kept for drawing)")
+      .finalize();
   m.def("seta_contact_state", [](const darray& params, const darray& Fn, const darray& Ft, int errors,
                                  bool all, int scan_points, int threads, double strain_limit) {
     const auto s = design_from(params);

@@ -130,6 +130,27 @@ def test_bad_input_is_named():
     assert math.isnan(st.a[0]) and math.isnan(st.a[2]) and math.isfinite(st.a[1])
 
 
+def test_bad_input_names_argument_value_index_and_range():
+    # issue 13 item 7: nothing silently clipped; each error says what, which element, and what is allowed
+    seta = gecko.TwoLevelSeta()
+    with pytest.raises(ValueError, match=r"Fn = nan .*need a finite normal force \(at index 2\)"):
+        seta.contact_state([0.0, 1.0, math.nan], 1.0)
+    with pytest.raises(ValueError, match=r"Fn = inf .*need a finite normal force"):
+        seta.contact_state(math.inf, 1.0)
+    with pytest.raises(ValueError, match=r"Ft = 10.01 .*need Ft <= \(Ft\)max = sqrt\(2 EA2 w\) = 10 \(at index 1\)"):
+        seta.contact_state([0.0, 0.0], [1.0, 10.01])
+    with pytest.raises(ValueError, match=r"Ft = nan .*need a finite shear force"):
+        seta.contact_state(0.0, math.nan)
+    with pytest.raises(ValueError, match=r"shapes \(3,\) and \(4,\)\): need shapes that broadcast"):
+        seta.contact_state(np.zeros(3), np.zeros(4))
+    # under errors="nan": the statuses critical_line gives the same Ft (5 beyond (Ft)max, 2 below -(Ft)max)
+    ft = np.array([10.01, -10.01, math.nan])
+    st = seta.contact_state(np.zeros(3), ft, errors="nan")
+    line = seta.critical_line(Ft=ft, errors="nan")
+    assert list(st.status) == list(line.status) == [ContactStatus.INVALID_INPUT, ContactStatus.NO_CONTACT,
+                                                    ContactStatus.INVALID_INPUT]
+
+
 def test_threads_give_the_same_numbers():
     seta = gecko.TwoLevelSeta()
     Fn = np.linspace(-3, 2, 200)[None, :]

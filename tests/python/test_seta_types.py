@@ -124,6 +124,20 @@ def test_status_enums_are_int_enums_with_the_display_tables_keyed_by_them():
     assert _core.CriticalStatus is CriticalStatus
 
 
+def test_contact_status_is_the_bound_cpp_enum_with_its_public_names():
+    from gecko.seta import ContactStatus
+    assert ContactStatus is _core.ContactStatus and issubclass(ContactStatus, enum.IntEnum)
+    assert gecko.ContactStatus is ContactStatus and "ContactStatus" in gecko.__all__
+    assert [(m.name, int(m)) for m in ContactStatus] == [
+        ("CONVERGED", 0), ("NOT_CONVERGED", 1), ("NO_CONTACT", 2), ("UNSUPPORTED_STATE", 3),
+        ("BEYOND_JOINT", 4), ("INVALID_INPUT", 5), ("SEVERAL_EQUILIBRIA", 6), ("INADMISSIBLE", 7)]
+    # The integers of the result arrays are the C++ values: each converts to its member.
+    st = gecko.TwoLevelSeta().contact_state([-1.0, -5.0, 3.0], 2.0)
+    assert [ContactStatus(int(k)) for k in st.status] == [
+        ContactStatus.CONVERGED, ContactStatus.NO_CONTACT, ContactStatus.BEYOND_JOINT]
+    assert list(st.status_names()) == ["CONVERGED", "NO_CONTACT", "BEYOND_JOINT"]
+
+
 def test_results_carry_enum_members_beside_their_texts():
     s = gecko.TwoLevelSeta()
     line = s.critical_line()

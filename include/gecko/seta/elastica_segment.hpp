@@ -353,11 +353,54 @@ inline bool direct_orientation_ok(const segment_constants<T, E>& g, T h, T X3s, 
   return ps ? h > 0 : h < 0;
 }
 
+// The phase form a libration end uses: near a turning point (sin psi above the midpoint of u+
+// and -1) the turning-point form of that side, else the bottom form of theta's direction.
+template <class T, bool E>
+inline segment_rep libration_rep(const segment_constants<T, E>& g, T psi, T X3) {
+  using std::cos; using std::sin;
+  if (sin(psi) > (g.up - 1) / 2) return cos(psi) > 0 ? segment_rep::turning_max : segment_rep::turning_min;
+  return X3 >= 0 ? segment_rep::bottom_up : segment_rep::bottom_down;
+}
+
+// One end of a libration segment that stays fixed while the other moves (the spatula's contact
+// edge in the forward problem), with the segment's libration constants: plan_segment reads them
+// instead of measuring the end again (one R_F per length instead of three).
+template <class T>
+struct libration_end {
+  T a = 0, X4top = 0, K = 0;  // asin(u+), sqrt(f4(u+)), the quarter period
+  T phase = 0;                // the end's phase on the cycle (libration_phase)
+  segment_rep rep = segment_rep::turning_max;
+  int shift = 0;
+};
+
+// False (nothing set) unless g is a libration the phase forms cover.
+template <class Policy, class T, bool E>
+inline bool make_libration_end(const segment_constants<T, E>& g, T psi_e, T X3e, libration_end<T>& end) {
+  using std::asin;
+  if (!(g.N > 0) || !(g.s > 0) || !(g.scale > 0) || !(g.up > -1) || !(g.up < 1)) return false;
+  if constexpr (E) {
+    if (!(g.b4 < 1)) return false;
+  }
+  end.a = asin(g.up);
+  end.X4top = seg_sqrt_f4(g, g.up);
+  end.K = quarter_libration<Policy>(g, end.X4top);
+  end.shift = phase_shift(segment_rep::bottom_up, psi_e);
+  const T pe = psi_e - end.shift * 2 * seta_pi<T>();
+  end.rep = libration_rep(g, pe, X3e);
+  end.phase = libration_phase<Policy>(g, end.a, end.X4top, end.K, end.rep, pe, X3e);
+  return end.phase == end.phase;
+}
+
 // Choose the plan for a state (plain values). direct_limit: largest path, in quarter periods,
 // measured with the direct form (< 1; margin for the Newton iterates around the state).
+// length: where given, receives the path length the plan was made from (phases and quarter
+// periods, as segment_length would measure it; only for a phase plan: a direct plan's length is
+// the direct form's). end_e: where given, the end (psi_e, X3e) measured before
+// (make_libration_end with the same g and end), used on a libration.
 template <class Policy, class T, bool E>
 inline segment_plan plan_segment(const segment_constants<T, E>& g, T psi_s, T X3s, T psi_e, T X3e,
-                                 T direct_limit = T(0.75)) {
+                                 T direct_limit = T(0.75), T* length = nullptr,
+                                 const libration_end<T>* end_e = nullptr) {
   using std::asin; using std::cos; using std::fabs; using std::floor; using std::sin;
   const T pi = seta_pi<T>();
   const T two_pi = 2 * pi;
@@ -382,26 +425,21 @@ inline segment_plan plan_segment(const segment_constants<T, E>& g, T psi_s, T X3
   plan.libration = g.up < 1;
   T L = 0, quarter = 0;
   if (plan.libration) {
-    const T a = asin(g.up);
-    const T X4top = seg_sqrt_f4(g, g.up);
-    const T K = quarter_libration<Policy>(g, X4top);
+    const T a = end_e ? end_e->a : asin(g.up);
+    const T X4top = end_e ? end_e->X4top : seg_sqrt_f4(g, g.up);
+    const T K = end_e ? end_e->K : quarter_libration<Policy>(g, X4top);
     // Window [-pi - a, a) + 2 pi j: the ends must lie in one (theta oscillates inside it).
     plan.shift_s = phase_shift(segment_rep::bottom_up, psi_s);
-    plan.shift_e = phase_shift(segment_rep::bottom_up, psi_e);
+    plan.shift_e = end_e ? end_e->shift : phase_shift(segment_rep::bottom_up, psi_e);
     if (plan.shift_s != plan.shift_e) {
       plan.state = segment_state::infeasible;
       return plan;
     }
-    const T threshold = (g.up - 1) / 2;
-    auto choose = [&](T psi, T sgn) {
-      if (sin(psi) > threshold) return cos(psi) > 0 ? segment_rep::turning_max : segment_rep::turning_min;
-      return sgn > 0 ? segment_rep::bottom_up : segment_rep::bottom_down;
-    };
     const T ps = psi_s - plan.shift_s * two_pi, pe = psi_e - plan.shift_e * two_pi;
-    plan.rep_s = choose(ps, sgn_s);
-    plan.rep_e = choose(pe, sgn_e);
+    plan.rep_s = libration_rep(g, ps, X3s);
+    plan.rep_e = end_e ? end_e->rep : libration_rep(g, pe, X3e);
     const T ts = libration_phase<Policy>(g, a, X4top, K, plan.rep_s, ps, X3s);
-    const T te = libration_phase<Policy>(g, a, X4top, K, plan.rep_e, pe, X3e);
+    const T te = end_e ? end_e->phase : libration_phase<Policy>(g, a, X4top, K, plan.rep_e, pe, X3e);
     plan.periods = te - ts > 0 ? 0 : 1;
     L = te - ts + 4 * plan.periods * K;
     quarter = K;
@@ -450,6 +488,8 @@ inline segment_plan plan_segment(const segment_constants<T, E>& g, T psi_s, T X3
   if (plan.direct) {
     plan.shift_s = plan.shift_e = 0;
     plan.periods = 0;
+  } else if (length) {
+    *length = L;
   }
   return plan;
 }

@@ -21,7 +21,9 @@ box of design parameters, subject to the built-in constraints and user callables
   rate vanishes like sqrt((Ft)max - Ft)); it is recorded as a failed evaluation, never fed on. In
   600 random designs (EI1 in [1, 20], EI2/EI1, l2 in [0.05, 0.5], EA2 in [10, 200], all angles)
   the line always rose steeply into its end, so the case was not met.
-* ``"area"``: A = integral over Ft in [0, (Ft)max] of max(0, -Fn(Ft)) dFt, the area between the
+* ``"area"``: A = integral over the admissible part of the line, Ft in [0, b] with b =
+  ``characteristics().admissible_end_ft`` ((Ft)max when the whole line is admissible; status-7
+  states, where the seta crosses the substrate, add no area), of max(0, -Fn(Ft)) dFt, the area between the
   critical line and the Ft axis where the line is tensile (Fn < 0): the region of the (Ft, Fn) plane
   (gripping side Ft >= 0) in which a pulled seta stays attached. Computed by Gauss-Legendre on each
   tensile interval, with Ft = b - (b - a) u^2 on the interval that ends at (Ft)max (Fn has a

@@ -10,7 +10,7 @@ from typing import Any, Callable, Optional
 import numpy as np
 
 from ..designs import FIELDS
-from ..seta import _LINE_END, CriticalStatus, LineEnd, TwoLevelSeta
+from ..seta import _LINE_END, CriticalStatus, LineEnd, MinimumStatus, TwoLevelSeta
 
 _INDEX = {f: i for i, f in enumerate(FIELDS)}
 OBJECTIVES = ("max_pull_off", "area", "pull_off_at")
@@ -193,6 +193,29 @@ def _gauss(n):
     return u, wu
 
 
+def _admissible_end_gradient(seta: TwoLevelSeta) -> np.ndarray:
+    """d b/dp of the end b of the admissible part of the critical line (where the seta first
+    touches the substrate before the contact edge), by central differences of
+    characteristics().admissible_end_ft, the same b the objective integrates to (refined along the
+    line to ~1e-10 of its arclength: a step of 1e-4 relative keeps that noise below 1e-6)."""
+    p = seta._params()
+    g = np.zeros(9)
+    for i, name in enumerate(FIELDS):
+        if not math.isfinite(p[i]):
+            continue
+        hp = 1e-4 * max(1.0, abs(p[i]))
+        ends = []
+        for x in (p[i] + hp, p[i] - hp):
+            q = dict(zip(FIELDS, map(float, p)))
+            q[name] = x
+            c = TwoLevelSeta(**q).characteristics()
+            if c.admissible_to_end or not math.isfinite(c.admissible_end_ft):
+                raise _EvaluationFailure(f"admissible end of the line not found at {name} = {x!r}")
+            ends.append(float(c.admissible_end_ft))
+        g[i] = (ends[0] - ends[1]) / (2 * hp)
+    return g
+
+
 def _area(seta: TwoLevelSeta, nodes: int = 48, **_):
     if math.isinf(seta.EA2):
         raise _EvaluationFailure("area is unbounded for EA2 = inf (no (Ft)max)")
@@ -201,6 +224,15 @@ def _area(seta: TwoLevelSeta, nodes: int = 48, **_):
         raise _EvaluationFailure(f"area undefined: the critical line folds at Ft = {line.folds}")
     _check_line_end(line.end_code, float(line.Ft[-1]), seta.ft_max)
     ftm = seta.ft_max
+    # Only the admissible part of the line holds adhesion: from Ft = 0 to the first state where the
+    # seta crosses the substrate before the edge (characteristics().admissible_end_ft). Beyond it
+    # (status 7) the equations' states are no states of a real seta and add no area.
+    c = seta.characteristics()
+    if c.min_status_code == MinimumStatus.no_admissible_state:
+        return 0.0, np.zeros(9), {"tensile_intervals": [], "admissible_end_ft": math.nan}
+    ft_adm = ftm if c.admissible_to_end else float(c.admissible_end_ft)
+    if not 0.0 < ft_adm <= ftm:
+        raise _EvaluationFailure(f"admissible part of the line ends at Ft = {ft_adm!r}")
     ft, fn = np.asarray(line.Ft, float), np.asarray(line.Fn, float)
     if np.any(np.diff(ft) <= 0):
         raise _EvaluationFailure("traced line not monotone in Ft")
@@ -217,11 +249,13 @@ def _area(seta: TwoLevelSeta, nodes: int = 48, **_):
     ends = []
     neg = fn < 0
     for k in range(len(ft) - 1):
-        if neg[k] != neg[k + 1]:
-            ends.append(brentq(fn_at, ft[k], ft[k + 1], xtol=1e-14, rtol=4 * np.finfo(float).eps))
-    edges = [0.0, *ends, ftm]
+        if neg[k] != neg[k + 1] and ft[k] < ft_adm:
+            root = brentq(fn_at, ft[k], ft[k + 1], xtol=1e-14, rtol=4 * np.finfo(float).eps)
+            if root < ft_adm:  # a crossing beyond the admissible part bounds nothing
+                ends.append(root)
+    edges = [0.0, *ends, ft_adm]
     u, wq = _gauss(nodes)
-    pts, wts, last = [], [], False
+    pts, wts, last, last_adm = [], [], False, False
     intervals = []
     for a, b in zip(edges[:-1], edges[1:]):
         if b <= a or fn_at(0.5 * (a + b)) >= 0:
@@ -232,16 +266,23 @@ def _area(seta: TwoLevelSeta, nodes: int = 48, **_):
             pts.append(b - (b - a) * u ** 2)
             wts.append(wq * 2 * (b - a) * u)
             last = True
+        elif b == ft_adm:
+            # Ends just short of (Ft)max (the reference design: 3e-4 before it): Fn ~ sqrt((Ft)max - Ft)
+            # there, so integrate in v = sqrt((Ft)max - Ft), where the integrand is smooth.
+            last_adm = True
+            va, vb = math.sqrt(ftm - a), math.sqrt(ftm - b)
+            v = vb + (va - vb) * u
+            pts.append(ftm - v ** 2)
+            wts.append(wq * (va - vb) * 2 * v)
         else:
             pts.append(a + (b - a) * u)
             wts.append(wq * (b - a))
     if not pts:
-        return 0.0, np.zeros(9), {"tensile_intervals": []}
+        return 0.0, np.zeros(9), {"tensile_intervals": [], "admissible_end_ft": ft_adm}
     P, W = np.concatenate(pts), np.concatenate(wts)
     order = np.argsort(P)
-    # The area is that under the equations' line up to (Ft)max, including a tail where the seta
-    # crosses the substrate (status 7, e.g. the reference design beyond Ft ~ 9.9997).
-    s = _sens(seta, P[order], allow_inadmissible=True)
+    # Every node lies inside the admissible part: a status-7 state there is refused (_sens).
+    s = _sens(seta, P[order])
     fnv = np.empty_like(P)
     dfn = np.empty((P.size, 9))
     fnv[order] = s["Fn"]
@@ -255,7 +296,10 @@ def _area(seta: TwoLevelSeta, nodes: int = 48, **_):
             raise _EvaluationFailure("traced line does not end at (Ft)max")
         fn_end = float(fn[-1])
         grad = grad + max(0.0, -fn_end) * _dftmax(seta)
-    return area, grad, {"tensile_intervals": intervals}
+    if last_adm:
+        # The end of the admissible part moves with the design: Leibniz's rule adds -Fn(b) db/dp.
+        grad = grad + max(0.0, -fn_at(ft_adm)) * _admissible_end_gradient(seta)
+    return area, grad, {"tensile_intervals": intervals, "admissible_end_ft": ft_adm}
 
 
 def _pull_off_at(seta: TwoLevelSeta, ft: float = None, **_):

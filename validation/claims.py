@@ -1,0 +1,223 @@
+#!/usr/bin/env python3
+"""Independent check of the critical line's "no state" claims (status 2 and 3) on the stress
+campaign's states (validation/data/stress_10000_states.npz), by a scan in Fn with the shooting
+route of validation/verify.py (no gecko code in the scan).
+
+What the claims say (include/gecko/seta/solve_critical.hpp, critical_line.hpp):
+
+* status 2, no critical state: the critical line followed from Ft = 0 does not reach this Ft (it
+  turned back at a fold before it, or |Ft| > (Ft)max, where Griffith's condition, paper 001 eq (3),
+  holds at no edge).
+* status 3, unsupported state: the critical state at this Ft lies outside the model's forms (the
+  axial load comparable to EA: f4(u) = 1 + b4 u of a segment vanishes on [-1, 1], b4 >= 1), or the
+  followed line left the forms before reaching this Ft.
+
+The scan: every critical state at Ft is a root of the base mismatch R(Fn) = theta1(0) - alpha1 of
+the backward shot from the contact edge (theta2 = pi/2, theta2' = +sqrt(2 (w - Ft^2/(2 EA2))/EI2))
+across the joint to the base (paper 001 eqs 2-5, 15). R is sampled on a grid of Fn over a wide
+range (sinh-spaced, dense near 0, out to +-S with S = 10 max(|Ft|, F, EI1/l1^2, w), F the
+campaign's Ft scale), each sign change with both signs above the shot's own error estimate is
+refined by bisection (30 halvings), and every root is classified by the model's forms at that state (b4 < 1 and
+1 + 2 c M > 0 for beam and spatula, with M from the first integrals, eqs 8 and 12: the spatula's
+M2 = Ft + w, the beam's from the joint conditions, eq 4). Only theta1(0) = alpha1 itself is a
+root (not alpha1 + 2 pi k: the solver's shortest-path convention).
+
+Per state:
+
+* ``no_root``: no sign change of R in the scanned range: the claim is confirmed (there is no
+  critical state at this Ft at all, in that range).
+* ``roots_outside_forms``: every root leaves the model's forms: the claim is confirmed (no state
+  the model can represent).
+* ``root_in_forms``: a root inside the forms exists. A scan at one Ft cannot say whether it lies
+  on the line followed from Ft = 0; the gecko trace (used only here, after the scan) says whether
+  that line ended before this Ft as the claim states (``turned_back`` at a fold for status 2,
+  ``unsupported_state`` for status 3: the root then lies on another branch, or beyond a stretch
+  outside the forms, and the claim as stated holds: ``root_beyond_line_end``), else
+  ``contradicted``: the solver should have found the state. ``root_below_traced_range``: Ft < 0
+  below every traced node (the trace runs from Ft = 0 towards (Ft)max): the claim "not reached"
+  holds by construction, but a critical state exists there.
+* ``undecided``: some grid signs are below the shot's error estimate (stiff shots at large |Fn|).
+
+    python3 -m validation.claims --sample 40 [--seed 1] [--grid 61] [--json validation/results/claims.json]
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import time
+
+import numpy as np
+
+from . import verify
+from .campaign import FIELDS, ft_scale
+from .recheck import STATES
+
+OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "results", "claims.json")
+
+
+def fn_grid(S: float, n: int) -> np.ndarray:
+    """n values of Fn in [-S, S], sinh-spaced (a tenth of the points within S/100 of 0)."""
+    u = np.linspace(-1.0, 1.0, n)
+    return S * np.sinh(6.0 * u) / math.sinh(6.0)
+
+
+def scan_range(p: np.ndarray, ft: float) -> float:
+    d = dict(zip(FIELDS, p))
+    F = float(ft_scale(p[None, :])[0])
+    return 10.0 * max(abs(ft), F, d["EI1"] / d["l1"] ** 2, d["w"])
+
+
+def _design_rows(p, k):
+    return {f: np.full(k, float(v)) for f, v in zip(FIELDS, p)}
+
+
+N_SCAN_MAX = 1 << 10  # steps per segment of a scan shot (signs only: no step doubling to 1e-13)
+
+
+def _shoot(p, ft, fn):
+    """R = theta1(0) - alpha1 and beta for each Fn, with the shot's error estimate: one pass of
+    verify's n- and 2n-step shots (order 8: the 2n error is ~|difference|/255), n from its a-priori
+    estimate; a sign is trusted only where |R| exceeds that estimate."""
+    fn = np.asarray(fn, float)
+    k = fn.size
+    d = _design_rows(p, k)
+    ftv = np.full(k, float(ft))
+    est = verify.step_estimate(d, ftv, fn)
+    n = np.minimum(np.maximum(verify.N_MIN, 2.0 ** np.ceil(np.log2(np.maximum(1.0, 1.5 * est)))), N_SCAN_MAX)
+    n = n.astype(np.int64)
+    both = {key: np.concatenate([v, v]) for key, v in d.items()}
+    th, be, _, _ = verify._shoot_fixed(both, np.concatenate([ftv, ftv]), np.concatenate([fn, fn]),
+                                       np.concatenate([n, 2 * n]))
+    err = (np.abs(th[k:] - th[:k]) + np.abs(be[k:] - be[:k])) / 255.0 + 1e-14 * (1 + np.abs(th[k:]))
+    err = np.where(np.isfinite(err), err, np.inf)
+    return th[k:] - d["alpha1"], be[k:], err
+
+
+def forms(p, ft: float, fn: float, beta: float) -> dict:
+    """The model's forms at a critical state (Ft, Fn, beta): b4 and 1 + 2 c M per segment."""
+    d = dict(zip(FIELDS, map(float, p)))
+    N = math.hypot(fn, ft)
+    phi = math.atan2(fn, ft)
+    c1 = 0.0 if math.isinf(d["EA1"]) else 1.0 / d["EA1"]
+    c2 = 0.0 if math.isinf(d["EA2"]) else 1.0 / d["EA2"]
+    M2 = ft + d["w"]  # eq (12) with Griffith's condition at the edge, eq (3)
+    ub = math.sin(beta - phi)
+    R2 = M2 - N * ub - c2 * N * N * ub * ub / 2  # 1/2 EI2 theta2'(l1)^2
+    v = math.sin(beta - d["alpha2"] - phi)
+    M1 = d["EI2"] / d["EI1"] * R2 + N * v + c1 * N * N * v * v / 2  # eq (4): EI1 theta1' = EI2 theta2'
+    out = {}
+    for name, c, M in (("beam", c1, M1), ("spatula", c2, M2)):
+        q = 1.0 + 2.0 * c * M
+        b4 = c * N / (1.0 + math.sqrt(q)) if q > 0 else math.inf
+        out[name] = {"b4": b4, "one_plus_2cM": q, "in_forms": bool(q > 0 and b4 < 1.0)}
+    out["in_forms"] = out["beam"]["in_forms"] and out["spatula"]["in_forms"]
+    return out
+
+
+def scan_state(p, ft: float, grid: int = 61, bisections: int = 30) -> dict:
+    """The scan of one state (design p, Ft): grid signs, refined roots, their forms."""
+    S = scan_range(p, ft)
+    fn = fn_grid(S, grid)
+    R, _, er = _shoot(p, ft, fn)
+    reliable = np.isfinite(R) & (np.abs(R) > er)
+    sign = np.where(reliable, np.sign(R), 0.0)
+    brackets = [(fn[k], fn[k + 1], sign[k]) for k in range(grid - 1)
+                if sign[k] != 0 and sign[k + 1] != 0 and sign[k] != sign[k + 1]]
+    roots = []
+    if brackets:
+        lo = np.array([b[0] for b in brackets])
+        hi = np.array([b[1] for b in brackets])
+        s_lo = np.array([b[2] for b in brackets])
+        for _ in range(bisections):
+            mid = 0.5 * (lo + hi)
+            Rm, _, _ = _shoot(p, ft, mid)
+            same = np.sign(Rm) == s_lo
+            lo = np.where(same, mid, lo)
+            hi = np.where(same, hi, mid)
+        x = 0.5 * (lo + hi)
+        Rx, bx, ex = _shoot(p, ft, x)
+        for k in range(x.size):
+            f = forms(p, ft, float(x[k]), float(bx[k]))
+            roots.append({"Fn": float(x[k]), "beta": float(bx[k]), "R": float(Rx[k]), "R_err": float(ex[k]),
+                          "in_forms": f["in_forms"], "b4_beam": f["beam"]["b4"], "b4_spatula": f["spatula"]["b4"]})
+    return {"S": S, "grid": grid, "unreliable_nodes": int((~reliable).sum()), "roots": roots}
+
+
+def classify(scan: dict) -> str:
+    if any(r["in_forms"] for r in scan["roots"]):
+        return "root_in_forms"
+    if scan["unreliable_nodes"]:
+        return "undecided"
+    return "roots_outside_forms" if scan["roots"] else "no_root"
+
+
+def line_end_check(p, ft: float, status: int) -> str:
+    """After the scan (gecko, for the in-forms roots only): did the line followed from Ft = 0 end
+    before this Ft as the claim says (a fold for status 2, leaving the forms for status 3)?"""
+    import gecko
+    s = gecko.TwoLevelSeta(**dict(zip(FIELDS, map(float, p))))
+    line = s.critical_line(errors="nan")
+    if len(line.Ft) and ft < float(np.min(line.Ft)):
+        # The trace runs from Ft = 0 towards (Ft)max: a negative Ft below its range is "not
+        # reached" by construction, though a critical state exists there.
+        return "root_below_traced_range"
+    ended = line.end_code == (gecko.LineEnd.turned_back if status == 2 else gecko.LineEnd.unsupported_state)
+    ft_end = float(line.Ft[-1]) if len(line.Ft) else 0.0
+    return "root_beyond_line_end" if ended and ft > ft_end else "contradicted"
+
+
+def sample_claims(z, n: int, seed: int):
+    """n (design, column) pairs with status 2 or 3, half of each where there are enough."""
+    rng = np.random.default_rng(seed)
+    st = z["status"]
+    picks = []
+    for code in (2, 3):
+        idx = np.argwhere(st == code)
+        m = min(len(idx), n // 2 + (n % 2 if code == 2 else 0))
+        picks += [tuple(map(int, idx[k])) for k in rng.choice(len(idx), size=m, replace=False)]
+    return picks
+
+
+def run(n: int, seed: int = 1, grid: int = 61, npz: str = STATES, progress: bool = False) -> dict:
+    z = np.load(npz)
+    P, FT, ST = z["P"], z["FT"], z["status"]
+    t0 = time.time()
+    states = []
+    for k, (i, j) in enumerate(sample_claims(z, n, seed)):
+        p, ft, status = P[i], float(FT[i, j]), int(ST[i, j])
+        sc = scan_state(p, ft, grid)
+        verdict = classify(sc)
+        if verdict == "root_in_forms":
+            verdict = line_end_check(p, ft, status)
+        states.append({"design": i, "column": j, "Ft": ft, "status": status, "verdict": verdict, **sc})
+        if progress:
+            print(f"{k + 1}/{n}: design {i} Ft {ft:.6g} status {status}: {verdict} ({len(sc['roots'])} roots)",
+                  flush=True)
+    counts = {}
+    for s in states:
+        key = f"status_{s['status']}"
+        counts.setdefault(key, {})
+        counts[key][s["verdict"]] = counts[key].get(s["verdict"], 0) + 1
+    return {"sample": len(states), "seed": seed, "grid": grid, "seconds": round(time.time() - t0, 1),
+            "counts": counts, "states": states}
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--sample", type=int, default=40)
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--grid", type=int, default=61)
+    ap.add_argument("--npz", default=STATES)
+    ap.add_argument("--json", default=OUT)
+    args = ap.parse_args(argv)
+    res = run(args.sample, args.seed, args.grid, args.npz, progress=True)
+    print(json.dumps(res["counts"], indent=1))
+    with open(args.json, "w") as f:
+        json.dump(res, f, indent=1, allow_nan=True)
+        f.write("\n")
+
+
+if __name__ == "__main__":
+    main()
