@@ -177,6 +177,16 @@ class CriticalStatus(enum.IntEnum):
     not_reached = 6
     inadmissible = 7
 
+class ContactStatus(enum.IntEnum):
+    CONVERGED = 0
+    NOT_CONVERGED = 1
+    NO_CONTACT = 2
+    UNSUPPORTED_STATE = 3
+    BEYOND_JOINT = 4
+    INVALID_INPUT = 5
+    SEVERAL_EQUILIBRIA = 6
+    INADMISSIBLE = 7
+
 class LineEnd(enum.IntEnum):
     reached_ft_end = 0
     reached_ft_max = 1
