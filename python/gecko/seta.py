@@ -10,7 +10,8 @@ and folds included, the GIL released)::
     line.Fn, line.theta_joint, line.status            # numpy arrays, NaN where status != 0
 
 Status codes (``line.status``): 0 converged; 1 Newton did not converge; 2 no critical state on the
-line followed from Ft = 0 (beyond a fold, |Ft| > (Ft)max); 3 state outside the model's forms
+line followed from Ft = 0 (beyond a fold, |Ft| > (Ft)max; critical states on branches that line
+never reaches may exist there, and an independent scan finds them at negative Ft); 3 state outside the model's forms
 (also: the line left them before reaching this Ft); 4 singular (Ft exactly at a fold); 5 bad input
 under ``errors="nan"``; 6 not reached: the continuation gave up before this Ft (point budget, step
 collapse, corrector failure; ``critical_line().end`` says which), so whether a critical state
@@ -61,7 +62,7 @@ SmallDeformation = _core.SmallDeformation
 STATUS = {
     0: "converged",
     1: "not converged",
-    2: "no critical state",
+    2: "no critical state on the line followed from Ft = 0 (states off that line may exist)",
     3: "unsupported state",
     4: "singular (at a fold)",
     5: "invalid input",
