@@ -33,7 +33,7 @@ namespace gecko {
 enum class critical_status : int {
   converged = 0,
   not_converged = 1,      // Newton did not converge from the guess it was given
-  no_critical_state = 2,  // the critical line followed from Ft = 0 does not reach this Ft
+  no_critical_state = 2,  // the critical line followed from Ft = 0 does not reach this Ft (states off it may exist)
   unsupported_state = 3,  // the state leaves the model's forms (axial load comparable to EA)
   singular = 4,           // singular Jacobian: Ft at a fold of the line (use the line instead)
   invalid_input = 5,      // bad input under nan_policy
