@@ -386,8 +386,11 @@ def test_real_ctrl_c_on_gecko_run_exits_130_and_the_next_run_resumes(tmp_path):
     scene = tmp_path / "sw.toml"
     scene.write_text('[sweep]\ndesigns = "random"\nn = 40\nseed = 1\noutputs = ["fn0", "ft_max"]\n'
                      'chunk_size = 10\n[sweep.bounds]\nEI1 = [2, 8]\nalpha2 = [0.2, 0.8]\n')
-    # every block of designs takes 2 s more, so that the signal lands mid-run even on a loaded machine
-    slow = ("import sys, time; import gecko.design_sweep as d; real = d.compute_chunk; "
+    # every block of designs takes 2 s more, so that the signal lands mid-run even on a loaded machine;
+    # SIGINT gets Python's default handler back: a test run started in the background by a
+    # non-interactive shell inherits SIGINT ignored, and Python then installs no KeyboardInterrupt
+    slow = ("import signal; signal.signal(signal.SIGINT, signal.default_int_handler); "
+            "import sys, time; import gecko.design_sweep as d; real = d.compute_chunk; "
             "d.compute_chunk = lambda b, o, t: (time.sleep(2.0), real(b, o, t))[1]; "
             "from gecko.cli import main; raise SystemExit(main(sys.argv[1:]))")
     env = dict(os.environ, PYTHONPATH=os.pathsep.join(sys.path))
