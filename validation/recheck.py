@@ -11,6 +11,11 @@ statuses and turning-point counts, the verifier's counts where conclusive, and S
 its Fn and beta arrays, so the bitwise comparison needs none of the regenerable data.
 
     PYTHONPATH=<gecko> python3 -m validation.recheck [validation/data/stress_10000_states.npz] [--workers 2] [--json out.json]
+
+It also prints the re-run's status histogram and every status transition (campaign -> now); with
+``--designs N`` only the first N designs are re-run (a quick look while working on the solver), and
+``--save F.npz`` keeps the re-run's per-state results, which ``python3 -m validation.changed`` takes
+to verify every state whose answer changed between two solvers.
 """
 from __future__ import annotations
 
@@ -34,6 +39,24 @@ def digest(a) -> str:
     return hashlib.sha256(np.ascontiguousarray(a, dtype="<f8").tobytes()).hexdigest()
 
 
+#: the statuses that mean the solver gave up (issue 13 item 5): 1 not converged, 6 not reached
+GIVE_UPS = (1, 6)
+
+
+def histogram(status) -> dict:
+    """{status: count} over all states."""
+    s, c = np.unique(np.asarray(status), return_counts=True)
+    return {str(int(a)): int(b) for a, b in zip(s, c)}
+
+
+def transitions(old, new) -> dict:
+    """{"old->new": count} for every state whose status changed."""
+    old, new = np.asarray(old).ravel(), np.asarray(new).ravel()
+    moved = old != new
+    pairs, c = np.unique(np.stack([old[moved], new[moved]]), axis=1, return_counts=True)
+    return {f"{int(a)}->{int(b)}": int(k) for (a, b), k in zip(pairs.T, c)}
+
+
 def _solve(args):
     P, FT = args
     import gecko
@@ -49,8 +72,14 @@ def main(argv=None):
     ap.add_argument("npz", nargs="?", default=STATES)
     ap.add_argument("--workers", type=int, default=2)
     ap.add_argument("--json", default=None)
+    ap.add_argument("--designs", type=int, default=None, help="re-run only the first N designs")
+    ap.add_argument("--save", default=None, help="write the re-run's Fn, beta, status, counts here (.npz)")
     args = ap.parse_args(argv)
-    z = np.load(args.npz)
+    z = dict(np.load(args.npz))
+    if args.designs is not None:   # a prefix of the campaign: per-state arrays cut, digests dropped
+        nd = args.designs
+        z = {k: (v[:nd] if v.ndim and v.shape[0] == z["P"].shape[0] else v) for k, v in z.items()
+             if not k.endswith("_sha256")}
     P, FT = z["P"], z["FT"]
     t0 = time.time()
     parts = [(P[k::args.workers], FT[k::args.workers]) for k in range(args.workers)]
@@ -63,13 +92,15 @@ def main(argv=None):
             for c, x in zip(cols, row):
                 c[j] = x
     Fn, beta, status, tpb, tps = cols
-    if "Fn_sha256" in z.files:  # the committed states file
+    if args.save:
+        np.savez_compressed(args.save, P=P, FT=FT, Fn=Fn, beta=beta, status=status, tpb=tpb, tps=tps)
+    if "Fn_sha256" in z:  # the committed states file
         fn_equal = digest(Fn) == str(z["Fn_sha256"])
         beta_equal = digest(beta) == str(z["beta_sha256"])
         ok = z["status"] == 0
         checked = z["checked"]
         v_turns_beam, v_turns_spatula = z["v_turns_beam"], z["v_turns_spatula"]
-    else:  # a merged campaign
+    elif "v_turns_beam" in z:  # a merged campaign
         fn_equal = Fn.tobytes() == z["Fn"].tobytes()
         beta_equal = beta.tobytes() == z["beta"].tobytes()
         v = {k[2:]: z[k] for k in z.files if k.startswith("v_")}
@@ -77,9 +108,15 @@ def main(argv=None):
         ok = z["status"] == 0
         checked = ok & ~cl["inconclusive_fn"] & (v["turns_beam"] >= 0)
         v_turns_beam, v_turns_spatula = v["turns_beam"], v["turns_spatula"]
+    else:  # a prefix of the committed states file (--designs): no digests to compare with
+        fn_equal = beta_equal = None
+        ok = z["status"] == 0
+        checked = z["checked"]
+        v_turns_beam, v_turns_spatula = z["v_turns_beam"], z["v_turns_spatula"]
     agree = checked & (v_turns_beam == tpb) & (v_turns_spatula == tps)
     out = dict(campaign=os.path.relpath(args.npz), designs=int(n), states=int(status.size),
-               Fn_bitwise_equal=bool(fn_equal), beta_bitwise_equal=bool(beta_equal),
+               Fn_bitwise_equal=None if fn_equal is None else bool(fn_equal),
+               beta_bitwise_equal=None if beta_equal is None else bool(beta_equal),
                status_equal=bool(np.array_equal(status, z["status"])),
                # states the campaign solved that are now flagged inadmissible (status 7, values kept)
                now_inadmissible=int(((status == 7) & (z["status"] == 0)).sum()),
@@ -87,6 +124,9 @@ def main(argv=None):
                                                                           status), z["status"])),
                turning_counts_changed=int(((tpb != z["tpb"]) | (tps != z["tps"]))[ok].sum()),
                turning_counts_checked=int(checked.sum()), turning_counts_agree=int(agree.sum()),
+               histogram=histogram(status), campaign_histogram=histogram(z["status"]),
+               give_up_percent=round(100.0 * float(np.isin(status, GIVE_UPS).mean()), 3),
+               transitions=transitions(z["status"], status),
                seconds=round(time.time() - t0, 1))
     return campaign.print_json(out, args.json)
 

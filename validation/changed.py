@@ -1,0 +1,78 @@
+#!/usr/bin/env python3
+"""Verify every state whose answer changed between two solvers, with the independent shooting route
+(validation/verify.py, no gecko code): the states a solver change newly solves (status 0 or 7 now,
+another status before) and the states solved by both whose Fn or beta moved by more than 1e-12
+relative. The unchanged states keep the verdict of the campaign that verified them.
+
+Both inputs are ``python3 -m validation.recheck --save`` files over the same states (the old solver
+and the new one):
+
+    PYTHONPATH=<old gecko> python3 -m validation.recheck --save old.npz
+    PYTHONPATH=<new gecko> python3 -m validation.recheck --save new.npz
+    python3 -m validation.changed old.npz new.npz [--json out.json]
+
+"Silently wrong" uses the campaign's threshold and conclusiveness rule (campaign.classify).
+"""
+from __future__ import annotations
+
+import argparse
+import time
+
+import numpy as np
+
+from . import campaign
+from .recheck import transitions
+
+#: relative change in Fn (or absolute change in beta, rad) above which a solved state counts as changed
+MOVED = 1e-12
+
+
+def changed_states(old: dict, new: dict) -> dict:
+    """Masks of the newly solved states and of the solved states whose values moved."""
+    solved = lambda s: (s == 0) | (s == campaign.INADMISSIBLE)  # noqa: E731
+    newly = solved(new["status"]) & ~solved(old["status"])
+    both = solved(new["status"]) & solved(old["status"])
+    with np.errstate(invalid="ignore"):
+        moved_fn = np.abs(new["Fn"] - old["Fn"]) > MOVED * np.maximum(1.0, np.abs(old["Fn"]))
+        moved_beta = np.abs(new["beta"] - old["beta"]) > MOVED
+    return dict(newly_solved=newly, moved=both & (moved_fn | moved_beta))
+
+
+def run(old_path: str, new_path: str) -> dict:
+    old, new = dict(np.load(old_path)), dict(np.load(new_path))
+    if old["P"].shape != new["P"].shape or not (np.array_equal(old["P"], new["P"])
+                                                and np.array_equal(old["FT"], new["FT"])):
+        raise ValueError(f"{old_path} and {new_path} hold different states")
+    masks = changed_states(old, new)
+    check = masks["newly_solved"] | masks["moved"]
+    t0 = time.time()
+    status = np.where(check, new["status"], -1)   # verify only the changed states
+    v = campaign.verify_states(new["P"], new["FT"], new["Fn"], new["beta"], status)
+    cl = campaign.classify(new["P"], new["FT"], new["Fn"], new["beta"], status, v)
+    conclusive = check & ~cl["inconclusive_fn"]
+    wrong = cl["wrong_fn"] | cl["wrong_beta"]
+    rows, cols = np.nonzero(wrong)
+    return dict(states=int(new["status"].size), transitions=transitions(old["status"], new["status"]),
+                newly_solved=int(masks["newly_solved"].sum()), moved=int(masks["moved"].sum()),
+                verified_conclusive=int(conclusive.sum()),
+                inconclusive=int((check & cl["inconclusive_fn"]).sum()),
+                silently_wrong=int(wrong.sum()),
+                wrong_states=[dict(design=int(r), column=int(c), Ft=float(new["FT"][r, c]),
+                                   Fn=float(new["Fn"][r, c]), rel_dFn=float(cl["rel"][r, c]))
+                              for r, c in zip(rows[:20], cols[:20])],
+                max_rel_dFn_conclusive=float(np.nanmax(np.where(conclusive, cl["rel"], np.nan)))
+                if conclusive.any() else None,
+                seconds=round(time.time() - t0, 1))
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("old")
+    ap.add_argument("new")
+    ap.add_argument("--json", default=None)
+    args = ap.parse_args(argv)
+    return campaign.print_json(run(args.old, args.new), args.json)
+
+
+if __name__ == "__main__":
+    main()
