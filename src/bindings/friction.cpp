@@ -13,9 +13,12 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+#include <type_traits>
 #include <vector>
 
 #include "bindings.hpp"
+#include "result_types.hpp"
 #include "vectorize.hpp"
 #include "gecko/beam.hpp"
 #include "gecko/friction.hpp"
@@ -90,7 +93,7 @@ struct python_shape {
   }
 };
 
-// The run options and result fields that simulate_spatulae and simulate_compliant_seta share.
+// The run options that simulate_spatulae and simulate_compliant_seta share.
 template <class Options>
 void set_run_options(Options& o, std::size_t spatulae, double duration, double t_off,
                      bool exponential, std::size_t samples, std::uint64_t seed) {
@@ -102,21 +105,64 @@ void set_run_options(Options& o, std::size_t spatulae, double duration, double t
   o.seed = seed;
 }
 
-template <class Result>
-py::dict run_fields(const Result& r) {
-  py::dict out;
-  out["mean_par"] = r.mean_par;
-  out["mean_perp"] = r.mean_perp;
-  out["std_par"] = r.std_par;
-  out["std_perp"] = r.std_perp;
-  out["stretch"] = r.stretch;
-  out["t_on"] = r.t_on;
-  out["detachments"] = r.detachments;
-  out["t"] = py::array_t<double>(r.t.size(), r.t.data());
-  out["F_par"] = py::array_t<double>(r.F_par.size(), r.F_par.data());
-  out["F_perp"] = py::array_t<double>(r.F_perp.size(), r.F_perp.data());
-  return out;
+// ---- field tables: each result struct's Python dict keys, written once (result_types.hpp) ------
+#define GECKO_F(m) GECKO_RESULT_FIELD(S, m)
+#define GECKO_A(m) GECKO_ARRAY_FIELD(S, m)
+
+template <class S = quadrature_report<double>>
+auto quadrature_report_fields() {
+  return std::make_tuple(GECKO_F(error_estimate), GECKO_F(levels), GECKO_F(evaluations), GECKO_F(converged));
 }
+
+template <class S = force_trace_result<double>>
+auto force_trace_fields() {
+  return std::make_tuple(GECKO_A(t), GECKO_A(d_par), GECKO_A(d_perp), GECKO_A(f_par), GECKO_A(f_perp));
+}
+
+// What the results of simulate_spatulae and simulate_compliant_seta share.
+template <class S>
+auto run_fields() {
+  return std::make_tuple(GECKO_F(mean_par), GECKO_F(mean_perp), GECKO_F(std_par), GECKO_F(std_perp),
+                         GECKO_F(stretch), GECKO_F(t_on), GECKO_F(detachments), GECKO_A(t), GECKO_A(F_par),
+                         GECKO_A(F_perp));
+}
+
+template <class S = spatula_simulation_result<double>>
+auto spatula_simulation_fields() {
+  return std::tuple_cat(run_fields<S>(),
+                        std::make_tuple(GECKO_F(mean_field_par), GECKO_F(mean_field_perp), GECKO_F(population_par),
+                                        GECKO_F(population_perp), GECKO_F(bound_par), GECKO_F(bound_perp)));
+}
+
+template <class S = compliant_seta_result<double>>
+auto compliant_seta_fields() {
+  return std::tuple_cat(run_fields<S>(), std::make_tuple(GECKO_F(max_drop), GECKO_F(max_slip_size), GECKO_F(slips),
+                                                         GECKO_F(collective_stiffness), GECKO_A(lag)));
+}
+
+// A fit of any law (steady_sliding_fit<double, Law>); the vectors stay lists, as they always were.
+template <class S>
+auto fit_fields() {
+  return std::make_tuple(
+      GECKO_F(names), GECKO_F(values), GECKO_F(standard_errors),
+      field("covariance", [](const S& s) {
+        const auto n = static_cast<py::ssize_t>(s.covariance.rows());
+        py::array_t<double> cov({n, n});
+        auto c = cov.mutable_unchecked<2>();
+        for (py::ssize_t i = 0; i < n; ++i)
+          for (py::ssize_t j = 0; j < n; ++j) c(i, j) = s.covariance(i, j);
+        return cov;
+      }),
+      GECKO_F(rss), GECKO_F(chi2), GECKO_F(dof), GECKO_F(iterations),
+      field("status", [](const S& s) { return std::string(to_string(s.status)); }), GECKO_F(reason),
+      GECKO_F(condition), GECKO_F(undetermined), GECKO_F(profile_lower), GECKO_F(profile_upper),
+      field("f_par1", [](const S& s) { return s.params.f_par1; }),
+      field("f_perp1", [](const S& s) { return s.params.f_perp1; }),
+      field("K", [](const S& s) { return from_mat2(s.params.K); }));
+}
+
+#undef GECKO_A
+#undef GECKO_F
 
 sliding_params<double> make_params(double N, const darray& K, double f_par1, double f_perp1) {
   sliding_params<double> p;
@@ -230,12 +276,7 @@ void bind_friction(py::module_& m) {
           opt.report = &rep;
           const Mat2 C = gecko::castigliano_compliance(python_shape{z, dzdx},
                                                        curved_beam<double>{L, EI, EA}, opt);
-          py::dict report;
-          report["error_estimate"] = rep.error_estimate;
-          report["levels"] = rep.levels;
-          report["evaluations"] = rep.evaluations;
-          report["converged"] = rep.converged;
-          return py::make_tuple(from_mat2(C), report);
+          return py::make_tuple(from_mat2(C), record(rep, quadrature_report_fields()));
         },
         py::arg("z"), py::arg("dzdx"), py::arg("L"), py::arg("EI"), py::arg("EA"),
         py::arg("tol") = 0.0, py::arg("max_levels") = 9);
@@ -294,13 +335,7 @@ void bind_friction(py::module_& m) {
       darray tt = times.cast<darray>();
       r = gecko::force_trace(KK, path, std::vector<double>(tt.data(), tt.data() + tt.size()));
     }
-    py::dict out;
-    out["t"] = py::array_t<double>(r.t.size(), r.t.data());
-    out["d_par"] = py::array_t<double>(r.d_par.size(), r.d_par.data());
-    out["d_perp"] = py::array_t<double>(r.d_perp.size(), r.d_perp.data());
-    out["f_par"] = py::array_t<double>(r.f_par.size(), r.f_par.data());
-    out["f_perp"] = py::array_t<double>(r.f_perp.size(), r.f_perp.data());
-    return out;
+    return record(r, force_trace_fields());
   }, py::arg("K"), py::arg("t"), py::arg("d_par"), py::arg("d_perp"), py::arg("times") = py::none(),
      py::arg("samples_per_segment") = 50);
 
@@ -392,14 +427,7 @@ void bind_friction(py::module_& m) {
       r = pop.empty() ? gecko::simulate_spatulae(p, law, V, o)
                       : gecko::simulate_spatulae(p, law, V, o, pop);
     }
-    py::dict out = run_fields(r);
-    out["mean_field_par"] = r.mean_field_par;
-    out["mean_field_perp"] = r.mean_field_perp;
-    out["population_par"] = r.population_par;
-    out["population_perp"] = r.population_perp;
-    out["bound_par"] = r.bound_par;
-    out["bound_perp"] = r.bound_perp;
-    return out;
+    return record(r, spatula_simulation_fields());
   }, py::arg("N"), py::arg("K"), py::arg("f_par1"), py::arg("f_perp1"), py::arg("V"), py::arg("G"),
      py::arg("spatulae"), py::arg("duration"), py::arg("t_off"), py::arg("exponential"),
      py::arg("samples"), py::arg("seed"), py::arg("length") = py::none(),
@@ -422,13 +450,7 @@ void bind_friction(py::module_& m) {
       py::gil_scoped_release release;
       r = gecko::simulate_compliant_seta(p, [G](double) { return G; }, V, o, pop);
     }
-    py::dict out = run_fields(r);
-    out["max_drop"] = r.max_drop;
-    out["max_slip_size"] = r.max_slip_size;
-    out["slips"] = r.slips;
-    out["collective_stiffness"] = r.collective_stiffness;
-    out["lag"] = py::array_t<double>(r.lag.size(), r.lag.data());
-    return out;
+    return record(r, compliant_seta_fields());
   }, py::arg("N"), py::arg("K"), py::arg("f_par1"), py::arg("f_perp1"), py::arg("V"), py::arg("G"),
      py::arg("spring"), py::arg("spatulae"), py::arg("duration"), py::arg("t_off"),
      py::arg("exponential"), py::arg("transient"), py::arg("samples"), py::arg("seed"),
@@ -472,32 +494,7 @@ void bind_friction(py::module_& m) {
       require_equal(m, sq, "sigma_perp");
       opt.sigma_perp = sq.data();
     }
-    auto pack = [&](const auto& r) {
-      py::dict out;
-      out["names"] = r.names;
-      out["values"] = r.values;
-      out["standard_errors"] = r.standard_errors;
-      const auto np_ = r.covariance.rows();
-      py::array_t<double> cov({np_, np_});
-      auto c = cov.mutable_unchecked<2>();
-      for (py::ssize_t i = 0; i < np_; ++i)
-        for (py::ssize_t j = 0; j < np_; ++j) c(i, j) = r.covariance(i, j);
-      out["covariance"] = cov;
-      out["rss"] = r.rss;
-      out["chi2"] = r.chi2;
-      out["dof"] = r.dof;
-      out["iterations"] = r.iterations;
-      out["status"] = std::string(to_string(r.status));
-      out["reason"] = r.reason;
-      out["condition"] = r.condition;
-      out["undetermined"] = r.undetermined;
-      out["profile_lower"] = r.profile_lower;
-      out["profile_upper"] = r.profile_upper;
-      out["f_par1"] = r.params.f_par1;
-      out["f_perp1"] = r.params.f_perp1;
-      out["K"] = from_mat2(r.params.K);
-      return out;
-    };
+    auto pack = [](const auto& r) { return record(r, fit_fields<std::decay_t<decltype(r)>>()); };
     if (kind == 2) {
       custom_detachment<double> law;
       law.names = custom_names;

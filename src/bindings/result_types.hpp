@@ -8,7 +8,10 @@
 //     values, get, [], in, iter, len; enums there are plain ints, as the dicts had them; deprecated:
 //     use the attributes);
 //   * columns(rows, n, fields): one numpy array per field over many results (float64 for reals,
-//     int8 for bools, int32 for integers and enums), in the table's order.
+//     int8 for bools, int32 for integers and enums), in the table's order;
+//   * record(s, fields): one result as a dict {name: value} in the table's order, each value cast
+//     as its getter returns it (GECKO_ARRAY_FIELD(S, m) names a std::vector member given as a
+//     numpy array; other vectors become lists).
 #pragma once
 
 #include <cstddef>
@@ -38,6 +41,14 @@ result_field<Get> field(const char* name, Get get) {
 }
 
 #define GECKO_RESULT_FIELD(S, m) ::gecko::bindings::field(#m, [](const S& s) { return s.m; })
+
+// A copy of v as a 1-d numpy array.
+template <class V>
+py::array_t<V> as_array(const std::vector<V>& v) {
+  return py::array_t<V>(static_cast<py::ssize_t>(v.size()), v.data());
+}
+
+#define GECKO_ARRAY_FIELD(S, m) ::gecko::bindings::field(#m, [](const S& s) { return ::gecko::bindings::as_array(s.m); })
 
 template <class Fields, class F>
 void for_each_field(const Fields& fields, F&& f) {
@@ -70,6 +81,14 @@ py::dict columns(const S* rows, std::size_t n, const Fields& fields) {
     for (std::size_t i = 0; i < n; ++i) p[i] = static_cast<C>(f.get(rows[i]));
     d[f.name] = a;
   });
+  return d;
+}
+
+// One result as a dict: {name: the getter's value, cast to Python}.
+template <class S, class Fields>
+py::dict record(const S& s, const Fields& fields) {
+  py::dict d;
+  for_each_field(fields, [&](const auto& f) { d[f.name] = f.get(s); });
   return d;
 }
 
