@@ -132,13 +132,10 @@ def test_threads_give_identical_results_and_gil_is_released():
 
 
 # ---- ufuncs (src/bindings/elliptic_ufuncs.cpp) --------------------------------------------------
-import csv  # noqa: E402
-import os  # noqa: E402
-
+from _tables import table  # noqa: E402
 from gecko import elliptic as ell  # noqa: E402
 
 UFUNC_NAMES = ["ellint_f", "ellint_e", "ellint_k", "carlson_rf", "carlson_rd", "carlson_rj", "carlson_rc"]
-DATA = os.path.join(os.path.dirname(__file__), "..", "data")
 
 
 def test_raw_ufuncs_have_float32_and_float64_loops():
@@ -243,18 +240,10 @@ def test_results_bitwise_identical_for_any_thread_count(name, nargs):
         ell.set_num_threads(-1)
 
 
-def _read_edge_table():
-    with open(os.path.join(DATA, "elliptic_legendre_edge.csv")) as f:
-        rows = list(csv.DictReader(f))
-    phi = np.array([float(r["phi"]) for r in rows])
-    m = np.array([float(r["m"]) for r in rows])
-    return phi, m, [r["F"] for r in rows], [r["E"] for r in rows]
-
-
 def test_m_above_one_at_the_edge_against_mpmath_table():
     # exact values at the given double inputs (tests/data/gen_elliptic.py edge), no allowance for
     # the conditioning in sin(phi): F <= 3 eps, E <= 4 eps
-    phi, m, F, E = _read_edge_table()
+    (phi, m), (F, E) = table("elliptic_legendre_edge.csv", ("phi", "m"), ("F", "E"), ref=str)
     f, e = gecko.ellint_f(phi, m), gecko.ellint_e(phi, m)
 
     def worst(got, want):

@@ -4,7 +4,6 @@ tests/data (F <= 3 eps, E <= 4 eps, R_F <= 3 eps, as for the scalar kernels), th
 whose lanes go back to the scalar kernel inside a vector (m > 1 next to sin^2 phi = 1/m, m -> 1,
 large phi, NaN, infinities), tails shorter than a vector, strided and aliased operands, and
 bitwise thread independence at each level."""
-import csv
 import os
 import subprocess
 import sys
@@ -15,20 +14,10 @@ import pytest
 
 import gecko
 from gecko import elliptic as ell
+from _tables import table as _table
 
-DATA = os.path.join(os.path.dirname(__file__), "..", "data")
 LEVELS = ell.simd_levels()
 EPS = np.finfo(float).eps
-
-
-def _table(name, cols, ref_cols):
-    with open(os.path.join(DATA, name)) as f:
-        rows = list(csv.DictReader(f))
-    args = [np.array([float(r[c]) for r in rows]) for c in cols]
-    # references in long double (64-bit significand on x86): the error of the reference itself
-    # is below 2^-11 eps
-    refs = [np.array([np.longdouble(r[c]) for r in rows]) for c in ref_cols]
-    return args, refs, [r.get("region", "") for r in rows]
 
 
 def _err_eps(got, ref):
@@ -47,7 +36,7 @@ def level(request):
 @pytest.mark.parametrize("table", ["elliptic_legendre.csv", "elliptic_legendre_edge.csv",
                                    "elliptic_near_singular.csv"])
 def test_legendre_tables_at_every_level(level, table):
-    (phi, m), (F, E), _ = _table(table, ("phi", "m"), ("F", "E"))
+    (phi, m), (F, E) = _table(table, ("phi", "m"), ("F", "E"))
     f, e = ell.ufuncs.ellint_f(phi, m), ell.ufuncs.ellint_e(phi, m)
     assert _err_eps(f, F).max() <= 3
     assert _err_eps(e, E).max() <= 4
@@ -56,14 +45,14 @@ def test_legendre_tables_at_every_level(level, table):
 
 
 def test_carlson_rf_table_at_every_level(level):
-    (x, y, z), (rf,), _ = _table("elliptic_rf.csv", ("x", "y", "z"), ("rf",))
+    (x, y, z), (rf,) = _table("elliptic_rf.csv", ("x", "y", "z"), ("rf",))
     assert _err_eps(ell.ufuncs.carlson_rf(x, y, z), rf).max() <= 3
 
 
 def test_levels_agree_within_the_accuracy_bound():
     # forcing the scalar fallback (or any other level) keeps the accuracy: every level lies
     # within 3 eps (F, R_F) / 4 eps (E) of the mpmath values, hence within 6 / 8 eps of each other
-    (phi, m), _, _ = _table("elliptic_legendre.csv", ("phi", "m"), ())
+    (phi, m), _ = _table("elliptic_legendre.csv", ("phi", "m"))
     rng = np.random.default_rng(3)
     x, y, z = (10.0 ** rng.uniform(-6, 6, 4001) for _ in range(3))
     before = ell.simd_level()
@@ -237,7 +226,7 @@ def test_zero_d_and_scalar_calls_take_the_scalar_kernel_with_the_ufuncs_types():
 
 def test_ellint_ek_ufunc_gives_e_and_k_together():
     # the same values as the complete-integral table (mpmath), and as gecko.ellint_ek; NaN for m > 1
-    (m,), (E, K), _ = _table("elliptic_complete.csv", ("m",), ("E", "K"))
+    (m,), (E, K) = _table("elliptic_complete.csv", ("m",), ("E", "K"))
     e, k = ell.ufuncs.ellint_ek(m)
     assert _err_eps(e, E).max() <= 4 and _err_eps(k, K).max() <= 3
     ek = gecko.ellint_ek(m[np.isfinite(E.astype(float))])
