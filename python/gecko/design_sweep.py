@@ -6,12 +6,12 @@ designs: the nine design fields, the outputs asked for, and ``status``::
 
     import gecko
     designs = gecko.sobol_designs({"EI1": (1, 10), "alpha2": (0, 0.5)}, n=4096, seed=1)
-    table = gecko.sweep(designs, outputs=["fn0", "slope_k", "max_pull_off"], out="runs/")
+    table = gecko.sweep(designs, outputs=["fn0", "slope_at_zero", "max_pull_off"], out="runs/")
 
 Only what the outputs need is solved (docs/theory/two_level_seta.md, gecko/seta/characteristics.hpp):
 
 * ``ft_max`` and the ``small_*`` quantities are closed forms: no solver runs;
-* ``fn0``, ``slope_k``, ``sticky_at_rest`` need the natural state at Ft = 0 (one homotopy solve
+* ``fn0``, ``slope_at_zero``, ``sticky_at_rest`` need the natural state at Ft = 0 (one homotopy solve
   and one linear solve for the slope), no line is traced;
 * ``max_pull_off``, ``ft_at_max_pull_off``, ``min_fn``, ``ft_at_line_end``, ``fn_at_line_end``,
   ``line_end``, ``folds``, ``admissible_end_ft``, ``admissible_to_end`` follow the critical line to
@@ -45,7 +45,7 @@ default ``errors="raise"`` refuses the whole sweep before computing, naming the 
 6 the line's minimum was not established: the line was given up before its end (no convergence at
 a singular point, point budget, stalled: ``line_end`` says which; the minimum over the followed part
 would only be a bound) or the minimum could not be refined, so ``max_pull_off``,
-``ft_at_max_pull_off`` and ``min_fn`` are NaN, while ``fn0``, ``slope_k`` and where the line
+``ft_at_max_pull_off`` and ``min_fn`` are NaN, while ``fn0``, ``slope_at_zero`` and where the line
 stopped (``ft_at_line_end``, ``fn_at_line_end``) are kept. ``line_end`` says why the followed
 line stopped (``gecko.design_sweep.LINE_END``; "left the model" is an end of the model's line, not
 a failure; -1 for an invalid design). An output is NaN where its solve failed.
@@ -99,7 +99,7 @@ SWEEP_OUTPUTS: Dict[str, int] = {
     "line_end": 2, "folds": 2, "admissible_end_ft": 2, "admissible_to_end": 2, "paper_k": 2,
     "max_pull_off_bound": 2, "max_pull_off_is_bound": 2,
 }
-DEFAULT_SWEEP_OUTPUTS = ("fn0", "slope_k", "max_pull_off", "ft_at_max_pull_off", "ft_max", "sticky_at_rest")
+DEFAULT_SWEEP_OUTPUTS = ("fn0", "slope_at_zero", "max_pull_off", "ft_at_max_pull_off", "ft_max", "sticky_at_rest")
 # column name in the table -> key in the compiled call's result
 _SOURCE = {"ft_at_max_pull_off": "ft_at_min_fn"}
 _BOOL = ("sticky_at_rest", "small_non_sticky", "admissible_to_end", "max_pull_off_is_bound")

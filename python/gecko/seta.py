@@ -676,7 +676,7 @@ class TwoLevelSeta:
         --------
         >>> import gecko
         >>> c = gecko.TwoLevelSeta().characteristics()
-        >>> round(c.fn0, 4), round(c.slope_k, 4), round(c.ft_at_min_fn, 4), c.sticky_at_rest
+        >>> round(c.fn0, 4), round(c.slope_at_zero, 4), round(c.ft_at_min_fn, 4), c.sticky_at_rest
         (0.2499, -0.7414, 7.1232, False)
         """
         d = _core.seta_characteristics(self._params(), _ft_end(ft_end), _strain_limit(strain_limit))

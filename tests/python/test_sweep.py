@@ -89,6 +89,11 @@ def test_default_outputs():
     t = gecko.sweep(designs(3), progress=False)
     assert list(t.columns) == list(FIELDS) + list(gecko.DEFAULT_SWEEP_OUTPUTS) + ["status"]
     assert t["sticky_at_rest"].dtype == bool and t["status"].dtype == np.int8
+    # the tangent at Ft = 0 under its name (issue 13); the deprecated alias slope_k is still an
+    # output, the same column bit for bit
+    assert "slope_at_zero" in gecko.DEFAULT_SWEEP_OUTPUTS and "slope_k" not in gecko.DEFAULT_SWEEP_OUTPUTS
+    old = gecko.sweep(designs(3), outputs=["slope_k"], progress=False)
+    assert t["slope_at_zero"].to_numpy().tobytes() == old["slope_k"].to_numpy().tobytes()
 
 
 # ---- determinism -----------------------------------------------------------------------------------

@@ -125,7 +125,7 @@ def _max_pull_off(seta: TwoLevelSeta, **_):
     if abs(s["Fn"][0] - min_fn) > 1e-9 * scale:
         raise _EvaluationFailure(f"minimiser at Ft = {ft_star!r} lies on another branch of a folded "
                                  f"line (Fn {s['Fn'][0]!r} vs {min_fn!r})")
-    slope = _slope(seta, ft_star, s["Fn"][0], s["dFn"][0]) if ft_star > 0 else c.slope_k
+    slope = _slope(seta, ft_star, s["Fn"][0], s["dFn"][0]) if ft_star > 0 else c.slope_at_zero
     if ft_star > 0 and not abs(slope) <= _STATIONARY * (1.0 + abs(min_fn) / ft_star):
         # The envelope theorem needs dFn/dFt = 0 at Ft*; the trace's own refinement can stop short
         # (seen where the elastica's turning points change within the bracket). Refine here: root

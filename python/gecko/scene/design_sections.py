@@ -5,7 +5,7 @@ optimisation (gecko.design_sweep, gecko.optimize).
     designs = "sobol"                    # "grid", "random", "sobol", "latin_hypercube" or "table"
     n = 1024                             # sample size (scaled by the resolution)
     seed = 1
-    outputs = ["fn0", "slope_k", "max_pull_off", "ft_max", "sticky_at_rest"]
+    outputs = ["fn0", "slope_at_zero", "max_pull_off", "ft_max", "sticky_at_rest"]
     errors = "nan"                       # keep invalid designs as rows with status 5
     executor = "threads"                 # or "dask://host:8786"
     [sweep.bounds]                       # random / sobol / latin_hypercube: [lower, upper(, "log")]
