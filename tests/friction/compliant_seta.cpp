@@ -9,19 +9,14 @@
 #include "gecko/friction/compliant_seta.hpp"
 #include "gecko/friction/spatula_simulation.hpp"
 #include "gecko/friction/steady_sliding.hpp"
+#include "friction/fixtures.hpp"
 
 namespace {
 
 // Unit spatulae: K_par_par = 1, f_par1 = 0, G = 1/2 (so dd = 1), V = 1 (t_on = 1).
 struct unit {
-  gecko::sliding_params<double> p;
+  gecko::sliding_params<double> p = friction_test::spatula(200, 1, -0.6, 0.5, 0, 0.1);
   double V = 1;
-  unit() {
-    p.N = 200;
-    p.K << 1, -0.6, -0.6, 0.5;
-    p.f_par1 = 0;
-    p.f_perp1 = 0.1;
-  }
   static double G(double) { return 0.5; }
 };
 

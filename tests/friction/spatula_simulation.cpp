@@ -8,22 +8,16 @@
 
 #include "gecko/friction/spatula_simulation.hpp"
 #include "gecko/friction/steady_sliding.hpp"
+#include "friction/fixtures.hpp"
 
 namespace {
 
 // A spatula whose attached and detached times are comparable.
 struct scene {
-  gecko::sliding_params<double> p;
+  gecko::sliding_params<double> p = friction_test::spatula(1000, 5, -3, 2, 0.2, 0.5);
   gecko::viscoelastic_detachment<double> law{2.0, 1.0, 0.5};
-  double V;
+  double V = 0.5;  // t_on = dd(V) / V = 2.26 s, comparable to t_off: the duty factor matters
   double t_off = 0.5;
-  scene() {
-    p.N = 1000;
-    p.K << 5, -3, -3, 2;
-    p.f_par1 = 0.2;
-    p.f_perp1 = 0.5;
-    V = 0.5;  // t_on = dd(V) / V = 2.26 s, comparable to t_off: the duty factor matters
-  }
 };
 
 struct rms_errors {
