@@ -11,6 +11,7 @@ import pytest
 
 import gecko
 from gecko.scene import Cache, run_scene
+from gecko.seta import DESIGN_FIELDS
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 RES = 0.25  # CI resolution: a quarter of each range's points
@@ -143,7 +144,7 @@ def test_seta_fig3c_angle_distribution():
     assert all(p.values["alpha1"] + p.values["alpha2"] == pytest.approx(math.pi / 3) for p in st.points)
     cs = chars(r)
     assert np.ptp([c["fn0"] for c in cs]) < 0.15  # (Fn)0 almost constant ...
-    slopes = [abs(c["slope_k"]) for c in cs]
+    slopes = [abs(c["slope_at_zero"]) for c in cs]
     assert all(a < b for a, b in zip(slopes, slopes[1:]))  # ... while the slope changes a lot
     assert slopes[-1] / slopes[0] > 4
 
@@ -181,13 +182,18 @@ def test_seta_fig5a_fn0_vs_stiffness_ratio():
 def test_seta_fig5b_slope_vs_alpha2():
     r = run("seta_fig5b_slope_vs_alpha2")
     curves = r.curves["seta_fig5b"]
-    assert [c.yname for c in curves] == ["abs_slope_k", "small_abs_slope_k"]
+    assert [c.yname for c in curves] == ["abs_slope_at_zero", "small_abs_slope_k"]
     for c in curves:
         assert np.all(np.diff(c.y) > 0)  # the paper's 1/|k| grows with alpha2
     st = r.scene.study("seta")
     assert all(p.values["alpha1"] + p.values["alpha2"] == pytest.approx(math.pi / 3) for p in st.points)
-    k = [d["characteristics"]["slope_k"] for d in r.data["seta"]]
+    k = [d["characteristics"]["slope_at_zero"] for d in r.data["seta"]]
     np.testing.assert_array_equal(np.abs(k), curves[0].y)
+    # both slopes under their own names (issue 13): the tangent at Ft = 0 and the paper's k (eq 16)
+    c = gecko.TwoLevelSeta(**{f: st.points[5].values[f] for f in DESIGN_FIELDS}).characteristics()
+    got = r.data["seta"][5]["characteristics"]
+    assert (got["slope_at_zero"], got["paper_k"]) == (c.slope_at_zero, c.paper_k) and c.slope_at_zero != c.paper_k
+    assert "slope_k" not in got  # a deprecated alias only where asked for
 
 
 def test_seta_fig6a_optimal_structure():

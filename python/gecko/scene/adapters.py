@@ -14,6 +14,7 @@ from typing import Dict, List, Tuple
 
 import numpy as np
 
+from .._renamed import RENAMED
 from ..seta import DESIGN_FIELDS, CriticalStatus
 from .errors import SceneError
 from .grids import DEFAULT_GRIDS, eval_grid
@@ -78,6 +79,13 @@ def _line_starts_at_zero(st) -> bool:
         return all(eval_grid(spec, st.env(p), "", 1.0)[0] == 0.0 for p in st.points)
     except Exception:  # a bad grid is reported by the runner, with its key
         return False
+
+
+def _slopes(name: str, k: float, prefix: str = "", inv: str = "") -> dict:
+    """A slope of the critical line with its magnitude and inverse magnitude (the paper plots 1/|k|,
+    Fig 5b): name, abs_name, inv_abs_name (or ``inv``), each after ``prefix``."""
+    return {prefix + name: k, prefix + "abs_" + name: abs(k),
+            (inv or prefix + "inv_abs_" + name): 1.0 / abs(k) if k != 0 else math.inf}
 
 
 def _set_fn0(ex, st, i: int, value: float) -> None:
@@ -203,19 +211,21 @@ class TwoLevelSetaAdapter(Adapter):
             ex.progress.advance(1, st.name)
 
     def k_characteristics(self, ex, st, step: Step) -> None:
+        # the deprecated aliases only where asked for (they would double the columns of csv = true)
+        aliases = {o: RENAMED[o] for o in st.outputs["characteristics"].options["which"] if o in RENAMED}
         for i in step.points:
             p = st.points[i]
 
             def fn():
                 c = _seta(p.values).characteristics()
-                k = c.slope_k
-                return {"fn0": c.fn0, "slope_k": k, "abs_slope_k": abs(k),
-                        "inv_abs_k": 1.0 / abs(k) if k != 0 else math.inf,
+                return {"fn0": c.fn0, **_slopes("slope_at_zero", c.slope_at_zero), **_slopes("paper_k", c.paper_k),
                         "max_pull_off": c.max_pull_off, "ft_at_max_pull_off": c.ft_at_min_fn,
                         "min_fn": c.min_fn, "ft_max": c.ft_max, "sticky_at_rest": bool(c.sticky_at_rest),
                         "ft_at_line_end": c.ft_at_line_end, "fn_at_line_end": c.fn_at_line_end,
                         "line_end": c.end, "folds": list(c.folds)}
-            ex.data[st.name][i].setdefault("characteristics", {}).update(ex.cached(("chars", _design(p)), fn))
+            got = ex.cached(("chars", _design(p)), fn)
+            ex.data[st.name][i].setdefault("characteristics", {}).update(
+                {**got, **{old: got[new] for old, new in aliases.items()}})
             ex.progress.advance(1, st.name)
 
     def k_small_deformation(self, ex, st, step: Step) -> None:
@@ -224,8 +234,7 @@ class TwoLevelSetaAdapter(Adapter):
             p = st.points[i]
             d = ex.cached(("small", _design(p)), lambda: _seta(p.values).small_deformation())
             k = d["slope_k"]
-            small = {"small_fn0": d["fn0"], "small_slope_k": k, "small_abs_slope_k": abs(k),
-                     "small_inv_abs_k": 1.0 / abs(k) if k != 0 else math.inf,
+            small = {"small_fn0": d["fn0"], **_slopes("slope_k", k, prefix="small_", inv="small_inv_abs_k"),
                      "small_contact_length": d["contact_length"], "small_non_sticky": bool(d["non_sticky"])}
             ex.data[st.name][i].setdefault("characteristics", {}).update(small)
             if "linear_line" in st.outputs:

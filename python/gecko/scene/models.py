@@ -11,6 +11,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Any, Callable, Dict, Optional, Sequence, Tuple
 
+from .._renamed import RENAMED
 from .errors import SceneError
 
 # ---- parameter kinds and range checks ----------------------------------------------------------
@@ -98,22 +99,31 @@ def _seta_params() -> Tuple[Param, ...]:
 #: the two-level seta's parameters: the bound C++ design type's fields, defaults, ranges and texts
 SETA_PARAMS = _seta_params()
 
-#: characteristic quantities of the two-level seta; "small_*" are the linear theory (eqs 7, 18-22)
-SETA_EXACT = ("fn0", "slope_k", "abs_slope_k", "inv_abs_k", "max_pull_off", "ft_at_max_pull_off", "min_fn",
-              "ft_max", "sticky_at_rest", "ft_at_line_end", "fn_at_line_end")
+#: characteristic quantities of the two-level seta; "small_*" are the linear theory (eqs 7, 18-22).
+#: Two slopes (issue 13, docs/theory/two_level_seta.md): slope_at_zero, the tangent dFn/dFt at Ft = 0,
+#: and paper_k, the paper's k of eq (16) (least squares over the lower part of the line).
+SETA_EXACT = ("fn0", "slope_at_zero", "abs_slope_at_zero", "inv_abs_slope_at_zero", "paper_k", "abs_paper_k",
+              "inv_abs_paper_k", "max_pull_off", "ft_at_max_pull_off", "min_fn", "ft_max", "sticky_at_rest",
+              "ft_at_line_end", "fn_at_line_end") + tuple(RENAMED)  # the deprecated aliases last
 SETA_SMALL = ("small_fn0", "small_slope_k", "small_abs_slope_k", "small_inv_abs_k", "small_contact_length",
               "small_non_sticky")
 
 CHARACTERISTIC_LABELS = {
     "fn0": "$(\\bar F_n)_0$",
     "small_fn0": "$(\\bar F_n)_0$, small deformation (eq 19)",
-    "slope_k": "slope $k = d\\bar F_n/d\\bar F_t$",
+    "slope_at_zero": "slope $d\\bar F_n/d\\bar F_t$ at $\\bar F_t = 0$",
+    "slope_k": "slope $d\\bar F_n/d\\bar F_t$ at $\\bar F_t = 0$",
+    "paper_k": "paper's slope $k$ (eq 16)",
     "small_slope_k": "slope $k$, small deformation (eq 18)",
-    # k = dFn/dFt (docs/theory/two_level_seta.md). The paper's plots have Fn horizontal and call the slope there
-    # k_paper = dFt/dFn, so the paper's "1/|k|" (Fig 5b) is |dFn/dFt| = abs_slope_k.
-    "abs_slope_k": "$|d\\bar F_n/d\\bar F_t|$ (the paper's $1/|k|$)",
+    # The paper's plots have Fn horizontal and show "1/|k|" (Fig 5b); the figure scene draws |dFn/dFt|
+    # at Ft = 0 there (docs/theory/two_level_seta.md, "The slope k").
+    "abs_slope_at_zero": "$|d\\bar F_n/d\\bar F_t|$ at $\\bar F_t = 0$ (the paper's $1/|k|$)",
+    "abs_slope_k": "$|d\\bar F_n/d\\bar F_t|$ at $\\bar F_t = 0$ (the paper's $1/|k|$)",
+    "abs_paper_k": "$|k|$, the paper's slope (eq 16)",
     "small_abs_slope_k": "$|d\\bar F_n/d\\bar F_t|$, small deformation (eq 21)",
-    "inv_abs_k": "$1/|d\\bar F_n/d\\bar F_t|$",
+    "inv_abs_slope_at_zero": "$1/|d\\bar F_n/d\\bar F_t|$ at $\\bar F_t = 0$",
+    "inv_abs_k": "$1/|d\\bar F_n/d\\bar F_t|$ at $\\bar F_t = 0$",
+    "inv_abs_paper_k": "$1/|k|$, the paper's slope (eq 16)",
     "small_inv_abs_k": "$1/|d\\bar F_n/d\\bar F_t|$, small deformation",
     "max_pull_off": "max pull-off $|\\bar F_n|$",
     "ft_at_max_pull_off": "$\\bar F_t$ at max pull-off",
@@ -256,7 +266,8 @@ def parse_output(model: Model, name: str, value, key: str) -> Optional[OutputSpe
         return OutputSpec("csv") if value else None
     if name == "characteristics":
         if isinstance(value, bool):
-            return OutputSpec(name, {"which": list(model.characteristics)}) if value else None
+            # true: every characteristic under its own name, not the deprecated aliases as well
+            return OutputSpec(name, {"which": [c for c in model.characteristics if c not in RENAMED]}) if value else None
         if isinstance(value, list) and all(isinstance(v, str) for v in value) and value:
             for i, v in enumerate(value):
                 if v not in model.characteristics:
