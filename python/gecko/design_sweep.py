@@ -21,9 +21,9 @@ Only what the outputs need is solved (docs/theory/two_level_seta.md, gecko/seta/
   at the end of the followed range and that end is not (Ft)max (EA2 = inf; a line given up),
   ``max_pull_off`` is NaN, as in ``TwoLevelSeta.characteristics()``, and ``max_pull_off_bound``
   (with ``max_pull_off_is_bound``) gives the bound over the followed range;
-* ``slope_at_zero`` is the tangent dFn/dFt at Ft = 0 (``slope_k`` its deprecated alias); ``paper_k``
-  is the paper's k (eq (16): the least-squares slope through (0, (Fn)0) over the lower part of the
-  line, see ``SetaCharacteristics.paper_k``).
+* ``slope_at_zero`` is the tangent dFn/dFt at Ft = 0 (``slope_k``: its deprecated alias, the same
+  column with a DeprecationWarning); ``paper_k`` is the paper's k (eq (16): the least-squares slope
+  through (0, (Fn)0) over the lower part of the line, see ``SetaCharacteristics.paper_k``).
 
 Designs are computed in chunks by the compiled batch call ``_core.seta_characteristics_batch``
 (C++ threads, the GIL released), or as Dask tasks on a ``dask.distributed`` cluster
@@ -77,6 +77,7 @@ from typing import Callable, Dict, List, Optional, Sequence, Union
 import numpy as np
 
 from . import _core
+from ._renamed import warn_renamed
 from . import seta as _seta
 # sampling and bounds live in gecko.designs; the old names stay importable from here
 from .designs import (DEFAULTS, FIELDS, _DOMAIN, _EXTRA, _check_fields, _count, _fixed, _need,  # noqa: F401
@@ -317,6 +318,7 @@ def sweep(designs, outputs: Optional[Sequence[str]] = None, *, out: Optional[Uni
     pd = _need("pandas", "gecko.sweep")
     t0 = time.perf_counter()
     outputs = _check_outputs(outputs)
+    warn_renamed(outputs, "gecko.sweep outputs")  # once per call, at the caller's line
     if errors not in ("raise", "nan"):
         raise ValueError(f"errors = {errors!r} is not allowed: need 'raise' or 'nan'")
     if isinstance(chunk_size, bool) or not isinstance(chunk_size, (int, np.integer)) or chunk_size < 1:

@@ -1,5 +1,6 @@
 """gecko.scene: the schema — sweeps, expressions, and one clear error for every bad scene."""
 import math
+import warnings
 from pathlib import Path
 
 import pytest
@@ -80,6 +81,30 @@ def test_plots_request_what_they_draw():
     assert sc.studies[0].outputs["characteristics"].options["which"] == ["fn0"]
     sc = load_scene({"study": [{"model": "kendall"}], "plot": [{"kind": "critical_line"}]})
     assert "critical_line" in sc.studies[0].outputs
+
+
+def _deprecations(fn):
+    with warnings.catch_warnings(record=True) as seen:
+        warnings.simplefilter("always")
+        out = fn()
+    return out, [str(w.message) for w in seen if issubclass(w.category, DeprecationWarning)]
+
+
+def test_deprecated_slope_names_warn_once_per_key_naming_the_replacement():
+    # issue 13: "slope_k" does not say which slope; the scene still runs, with the same values
+    scene = {"study": [{"model": "two_level_seta", "parameters": {"EI2": [1, 2]},
+                        "outputs": {"characteristics": ["slope_k", "abs_slope_k", "slope_k", "paper_k"]}}],
+             "plot": [{"kind": "characteristic", "x": "EI2", "y": ["inv_abs_k", "abs_paper_k"]}]}
+    sc, dep = _deprecations(lambda: load_scene(scene))
+    assert dep == ["scene study[0].outputs.characteristics: 'slope_k' is deprecated, use 'slope_at_zero' (the "
+                   "same values); 'abs_slope_k' is deprecated, use 'abs_slope_at_zero' (the same values)",
+                   "scene plot[0].y: 'inv_abs_k' is deprecated, use 'inv_abs_slope_at_zero' (the same values)"]
+    assert sc.studies[0].outputs["characteristics"].options["which"] == ["slope_k", "abs_slope_k", "paper_k",
+                                                                          "inv_abs_k", "abs_paper_k"]
+    _, dep = _deprecations(lambda: load_scene(seta_scene(outputs={"characteristics": True})))
+    assert dep == []  # true: the current names only
+    _, dep = _deprecations(lambda: load_scene(seta_scene(outputs={"characteristics": ["slope_at_zero", "paper_k"]})))
+    assert dep == []
 
 
 # ---- bad scenes: one clear error naming the file, the key path and what is allowed -------------

@@ -3,6 +3,7 @@ gecko.sweep, the files `gecko run` writes, the example scenes, the optimisation 
 import json
 import math
 import socket
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -48,6 +49,17 @@ def test_every_kind_of_designs(designs, extra):
     assert (r.sweep["status"] == 0).sum() >= len(r.sweep) - 2
     if designs == "grid":
         assert r.sweep["EI1"].tolist() == [2, 2, 2, 4, 4, 4]
+
+
+def test_deprecated_sweep_output_warns_once_per_run_with_its_key():
+    with warnings.catch_warnings(record=True) as seen:
+        warnings.simplefilter("always")
+        r = run_scene(sweep_scene(n=4, outputs=["fn0", "slope_k"], chunk_size=1), progress=False)
+    dep = [str(w.message) for w in seen if issubclass(w.category, DeprecationWarning)]
+    # the parser names the key; gecko.sweep, called by the run, does not warn a second time
+    assert dep == ["scene sweep.outputs: 'slope_k' is deprecated, use 'slope_at_zero' (the same values)"]
+    direct = gecko.sweep(r.sweep[list(gecko.design_sweep.FIELDS)], outputs=["slope_at_zero"], progress=False)
+    assert r.sweep["slope_k"].to_numpy().tobytes() == direct["slope_at_zero"].to_numpy().tobytes()
 
 
 def test_table_designs_relative_to_the_scene(tmp_path):

@@ -2,6 +2,7 @@
 only the asked-for solves, order and bitwise equality for any chunk size and thread count,
 resuming an interrupted run, the design samplers and their errors."""
 import math
+import warnings
 
 import numpy as np
 import pytest
@@ -32,7 +33,7 @@ def bitwise_equal(a, b):
 
 def test_values_are_the_characteristics_of_each_design():
     d = designs(12)
-    t = gecko.sweep(d, outputs=["fn0", "slope_k", "max_pull_off", "ft_at_max_pull_off", "ft_max",
+    t = gecko.sweep(d, outputs=["fn0", "slope_at_zero", "max_pull_off", "ft_at_max_pull_off", "ft_max",
                                 "sticky_at_rest", "min_fn", "ft_at_line_end", "fn_at_line_end", "line_end",
                                 "folds", "small_fn0", "small_slope_k"], threads=2, progress=False)
     assert len(t) == 12 and (t["status"] == 0).all()
@@ -41,7 +42,7 @@ def test_values_are_the_characteristics_of_each_design():
         seta = gecko.TwoLevelSeta(**{f: d[f].iloc[i] for f in FIELDS})
         c = seta.characteristics()
         # the same C++ routine per design: bitwise equal
-        assert row["fn0"] == c.fn0 and row["slope_k"] == c.slope_k
+        assert row["fn0"] == c.fn0 and row["slope_at_zero"] == c.slope_at_zero
         assert row["max_pull_off"] == c.max_pull_off and row["ft_at_max_pull_off"] == c.ft_at_min_fn
         assert row["min_fn"] == c.min_fn and row["ft_at_line_end"] == c.ft_at_line_end
         assert row["fn_at_line_end"] == c.fn_at_line_end
@@ -56,9 +57,9 @@ def test_values_are_the_characteristics_of_each_design():
 
 def test_fn0_and_slope_do_not_depend_on_whether_the_line_is_traced():
     d = designs(10)
-    shallow = gecko.sweep(d, outputs=["fn0", "slope_k"], progress=False)
-    deep = gecko.sweep(d, outputs=["fn0", "slope_k", "max_pull_off"], progress=False)
-    bitwise_equal(shallow[["fn0", "slope_k"]], deep[["fn0", "slope_k"]])
+    shallow = gecko.sweep(d, outputs=["fn0", "slope_at_zero"], progress=False)
+    deep = gecko.sweep(d, outputs=["fn0", "slope_at_zero", "max_pull_off"], progress=False)
+    bitwise_equal(shallow[["fn0", "slope_at_zero"]], deep[["fn0", "slope_at_zero"]])
     # and (Fn)0 agrees with the critical line at Ft = 0 solved independently (Newton to 1e-12)
     line = gecko.critical_line_batch(design_sweep.design_matrix(d), [0.0])
     np.testing.assert_allclose(shallow["fn0"], line.Fn[:, 0], rtol=0, atol=1e-10)
@@ -89,18 +90,32 @@ def test_default_outputs():
     t = gecko.sweep(designs(3), progress=False)
     assert list(t.columns) == list(FIELDS) + list(gecko.DEFAULT_SWEEP_OUTPUTS) + ["status"]
     assert t["sticky_at_rest"].dtype == bool and t["status"].dtype == np.int8
-    # the tangent at Ft = 0 under its name (issue 13); the deprecated alias slope_k is still an
-    # output, the same column bit for bit
     assert "slope_at_zero" in gecko.DEFAULT_SWEEP_OUTPUTS and "slope_k" not in gecko.DEFAULT_SWEEP_OUTPUTS
-    old = gecko.sweep(designs(3), outputs=["slope_k"], progress=False)
-    assert t["slope_at_zero"].to_numpy().tobytes() == old["slope_k"].to_numpy().tobytes()
+
+
+def test_slope_k_is_a_deprecated_alias_warned_once_per_call():
+    # the tangent at Ft = 0 under its name (issue 13); the deprecated alias slope_k is still an
+    # output, the same column bit for bit, with one DeprecationWarning per call (not per chunk)
+    # attributed to the caller's line and naming the replacement
+    d = designs(3)
+    with warnings.catch_warnings(record=True) as seen:
+        warnings.simplefilter("always")
+        new = gecko.sweep(d, outputs=["slope_at_zero", "paper_k"], chunk_size=1, progress=False)
+        old = gecko.sweep(d, outputs=["fn0", "slope_k"], chunk_size=1, progress=False)
+    dep = [w for w in seen if issubclass(w.category, DeprecationWarning)]
+    assert len(dep) == 1, [str(w.message) for w in dep]
+    assert str(dep[0].message) == "gecko.sweep outputs: 'slope_k' is deprecated, use 'slope_at_zero' (the same values)"
+    assert dep[0].filename == __file__
+    assert new["slope_at_zero"].to_numpy().tobytes() == old["slope_k"].to_numpy().tobytes()
+    with pytest.deprecated_call(match="use 'slope_at_zero'"):
+        gecko.sweep(d, outputs="slope_k", progress=False)
 
 
 # ---- determinism -----------------------------------------------------------------------------------
 
 def test_same_table_for_any_chunk_size_and_thread_count():
     d = designs(23)
-    outputs = ["fn0", "slope_k", "max_pull_off", "ft_at_max_pull_off", "line_end"]
+    outputs = ["fn0", "slope_at_zero", "max_pull_off", "ft_at_max_pull_off", "line_end"]
     ref = gecko.sweep(d, outputs=outputs, chunk_size=1000, threads=1, progress=False)
     for chunk, threads in ((1, 1), (5, 2), (7, 3), (23, 2), (4, 8)):
         t = gecko.sweep(d, outputs=outputs, chunk_size=chunk, threads=threads, progress=False)
@@ -331,12 +346,12 @@ def test_every_kernel_kind_matches_the_single_design_call():
             dict(EI1=0.5, EI2=2.0, l2=0.5, alpha1=1.2, alpha2=0.1, EA1=300.0, EA2=math.inf),
             dict(EA1=math.inf, EA2=math.inf)]
     setae = [gecko.TwoLevelSeta(**r) for r in rows]
-    t = gecko.sweep(setae, outputs=["fn0", "slope_k", "max_pull_off", "ft_at_line_end", "line_end"],
+    t = gecko.sweep(setae, outputs=["fn0", "slope_at_zero", "max_pull_off", "ft_at_line_end", "line_end"],
                     threads=2, progress=False)
     for i, s in enumerate(setae):
         c = s.characteristics()
         got = t.iloc[i]
-        for col, want in (("fn0", c.fn0), ("slope_k", c.slope_k), ("max_pull_off", c.max_pull_off),
+        for col, want in (("fn0", c.fn0), ("slope_at_zero", c.slope_at_zero), ("max_pull_off", c.max_pull_off),
                           ("ft_at_line_end", c.ft_at_line_end)):
             assert np.float64(got[col]).tobytes() == np.float64(want).tobytes(), (i, col)
         assert design_sweep.LINE_END[int(got["line_end"])] == c.end

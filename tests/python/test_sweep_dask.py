@@ -13,7 +13,7 @@ distributed = pytest.importorskip("distributed", reason="the Dask executor needs
 import gecko  # noqa: E402
 
 BOUNDS = {"EI1": (2.0, 8.0), "EI2": (0.5, 4.0, "log"), "alpha2": (0.2, 0.8), "EA2": (20.0, 200.0, "log")}
-OUTPUTS = ["fn0", "slope_k", "max_pull_off", "ft_at_max_pull_off", "ft_max", "sticky_at_rest", "line_end"]
+OUTPUTS = ["fn0", "slope_at_zero", "max_pull_off", "ft_at_max_pull_off", "ft_max", "sticky_at_rest", "line_end"]
 
 
 def bitwise_equal(a, b):

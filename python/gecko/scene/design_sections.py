@@ -30,6 +30,7 @@ from typing import Any, Dict, List, Optional, Tuple
 
 import numpy as np
 
+from .._renamed import warn_renamed
 from . import expr
 from .errors import SceneError
 from .grids import eval_grid
@@ -214,6 +215,7 @@ def parse_sweep(t, res: float, base_dir: Optional[str]) -> SweepSpec:
         if o not in SWEEP_OUTPUTS:
             raise SceneError(f"unknown output {o!r}; allowed: " + ", ".join(SWEEP_OUTPUTS), key=f"{key}.outputs[{i}]")
     spec.outputs = list(dict.fromkeys(outs))
+    warn_renamed(spec.outputs, f"scene {key}.outputs")
     if "chunk_size" in t:
         spec.chunk_size = _int_in(t["chunk_size"], f"{key}.chunk_size", 1, 10**8)
     ex = t.get("executor", "threads")

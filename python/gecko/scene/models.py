@@ -11,7 +11,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Any, Callable, Dict, Optional, Sequence, Tuple
 
-from .._renamed import RENAMED
+from .._renamed import RENAMED, warn_renamed
 from .errors import SceneError
 
 # ---- parameter kinds and range checks ----------------------------------------------------------
@@ -273,6 +273,7 @@ def parse_output(model: Model, name: str, value, key: str) -> Optional[OutputSpe
                 if v not in model.characteristics:
                     raise SceneError(f"unknown characteristic {v!r}; allowed: " + ", ".join(model.characteristics),
                                      key=f"{key}[{i}]")
+            warn_renamed(value, f"scene {key}")
             return OutputSpec(name, {"which": list(dict.fromkeys(value))})
         raise SceneError("need true, false or a non-empty list of names from: " + ", ".join(model.characteristics),
                          key=key)

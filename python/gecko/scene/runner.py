@@ -11,6 +11,7 @@ import io
 import os
 import shutil
 import time
+import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Dict, List, Optional, Sequence
@@ -432,10 +433,12 @@ def _run_sweep(sc: Scene, out: Optional[os.PathLike], threads: int, progress: Op
     spec = sc.sweep
     try:
         designs = spec.design_table()
-        return sweep(designs, spec.outputs, out=None if out is None else _sweep_folder(sc, Path(out)),
-                     chunk_size=spec.chunk_size, threads=threads,
-                     executor=None if spec.executor == "threads" else spec.executor,
-                     connect_timeout=spec.connect_timeout, errors=spec.errors, progress=progress)
+        with warnings.catch_warnings():  # a deprecated output was warned of with its key when parsed
+            warnings.filterwarnings("ignore", message=r"gecko\.sweep outputs: ", category=DeprecationWarning)
+            return sweep(designs, spec.outputs, out=None if out is None else _sweep_folder(sc, Path(out)),
+                         chunk_size=spec.chunk_size, threads=threads,
+                         executor=None if spec.executor == "threads" else spec.executor,
+                         connect_timeout=spec.connect_timeout, errors=spec.errors, progress=progress)
     except ValueError as exc:  # a design the kernels refuse, a bad table: name the section
         raise SceneError(str(exc), key="sweep", source=sc.source) from None
 

@@ -32,6 +32,7 @@ from typing import Any, Dict, List, Optional
 
 import numpy as np
 
+from .._renamed import warn_renamed
 from . import expr
 from .errors import SceneError
 from .models import (CHARACTERISTIC_LABELS, MODELS, Model, OutputSpec, Param, _check_keys, _tname,
@@ -696,6 +697,7 @@ def _parse_plot(p, key: str, studies: List[Study]) -> PlotSpec:
                 if yy not in have:
                     have.append(yy)
         spec.x, spec.y = x, list(y)
+        warn_renamed(y, f"scene {key}.y")
     elif "x" in p or "y" in p:
         raise SceneError(f"x and y are only for 'characteristic' plots; a {kind!r} plot draws fixed quantities",
                          key=key)
