@@ -13,15 +13,13 @@ _AT_ELEMENT = re.compile(r"\(at element (\d+)\)$")
 def with_index(error: ValueError, shape) -> ValueError:
     """The compiled loops name a bad element by its flat index, "(at element 7)"; this names it by
     its index in the caller's (broadcast) shape, "(at index (1, 3))", so the message points at the
-    element the caller wrote."""
+    element the caller wrote. A scalar (0-d) input has no index: the suffix is dropped (the
+    message already names the argument and its value)."""
     msg = str(error)
     m = _AT_ELEMENT.search(msg)
-    if not m or len(shape) < 1:
+    if not m:
         return error
-    flat = int(m.group(1))
-    idx = np.unravel_index(flat, shape)
-    where = f"(at index {tuple(int(i) for i in idx)})" if len(shape) > 1 else f"(at index {int(idx[0])})"
-    return ValueError(msg[:m.start()] + where)
+    return ValueError(msg[:m.start()].rstrip() + _where(tuple(shape), int(m.group(1))))
 
 _ERRORS = {"raise": 0, "nan": 1}
 
@@ -40,9 +38,12 @@ class InputError(TypeError, ValueError):
 
 
 def _where(shape, flat: int) -> str:
-    idx = np.unravel_index(flat, shape) if shape else ()
-    return f" (at index {tuple(int(i) for i in idx)})" if len(shape) > 1 else (f" (at index {int(idx[0])})"
-                                                                               if shape else "")
+    """The suffix naming flat index ``flat`` in ``shape``: " (at index i)" or " (at index (i, j))";
+    "" for a scalar (0-d) shape, which has no index."""
+    if not shape:
+        return ""
+    idx = np.unravel_index(flat, shape)
+    return f" (at index {tuple(int(i) for i in idx)})" if len(shape) > 1 else f" (at index {int(idx[0])})"
 
 
 def _is_real_scalar(v) -> bool:
@@ -210,11 +211,7 @@ def _raise_first_bad(ufunc, scalar, args, kwargs, result):
     idx = np.unravel_index(flat, bad.shape) if bad.shape else ()
     dtype = kwargs.get("dtype") or res.dtype
     values = [float(np.asarray(a[idx]).astype(dtype)) for a in inputs]
-    where_txt = ""
-    if len(bad.shape) > 1:
-        where_txt = f" (at index {tuple(int(i) for i in idx)})"
-    elif len(bad.shape) == 1:
-        where_txt = f" (at index {int(idx[0])})"
+    where_txt = _where(bad.shape, flat)
     try:
         scalar(*values, 0)
     except ValueError as e:

@@ -14,6 +14,23 @@ def test_error_names_the_index_in_the_callers_shape():
         gecko.ellint_k([0.1, 0.2, 3.0, 4.0])
 
 
+@pytest.mark.parametrize("scalar", [3.0, np.float64(3.0), np.array(3.0)])
+def test_a_scalar_has_no_index(scalar):
+    # a scalar (0-d) input: the message names the argument and its value, and no index
+    with pytest.raises(ValueError, match=r"m = 3 is out of range: need m <= 1$"):
+        gecko.ellint_k(scalar)
+    with pytest.raises(ValueError, match=r"\(at index 0\)$"):
+        gecko.ellint_k([scalar])
+    # the same through gecko._vectorize.with_index (contact_state's loop), not the raw "(at element 0)"
+    seta = gecko.TwoLevelSeta()
+    with pytest.raises(ValueError, match=r"Fn = nan is out of range: need a finite normal force$"):
+        seta.contact_state(scalar * np.nan, 1.0)
+    with pytest.raises(ValueError, match=r"Fn = nan is out of range: need a finite normal force \(at index 1\)$"):
+        seta.contact_state([0.0, scalar * np.nan], 1.0)
+    with pytest.raises(ValueError, match=r"force \(at index \(1, 0\)\)$"):
+        seta.contact_state([[0.0], [np.nan]], [1.0, 2.0])
+
+
 def test_smallest_failing_index_on_a_threaded_loop():
     m = np.full(200_000, 0.5)
     m[150_000] = 2.0   # in the second thread's block
