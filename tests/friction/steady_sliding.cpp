@@ -8,6 +8,7 @@
 
 #include "gecko/friction/force_trace.hpp"
 #include "gecko/friction/steady_sliding.hpp"
+#include "friction/fixtures.hpp"
 
 TEST_CASE("Fig 6 presets satisfy the paper's fitted combinations", "[friction][steady_sliding]") {
   const auto ve = gecko::fig6_viscoelastic<double>();
@@ -69,12 +70,8 @@ TEST_CASE("steady_sliding with finite t_off against eqs 5-6 integrated along the
   // Independent route: realise (f_par1, f_perp1) by a tip displacement d1, drag it by the
   // stretch, integrate f = K d along the path with force_trace (trapezoid, exact for linear),
   // and check that the stretch stores exactly G = U(d2) - U(d1) (A2.4-A2.5).
-  gecko::sliding_params<double> p;
-  p.N = 300;
-  p.K << 5, -3, -3, 2.2;
   for (double f1 : {-0.4, 0.0, 0.7}) {
-    p.f_par1 = f1;
-    p.f_perp1 = 0.3;
+    const gecko::sliding_params<double> p = friction_test::spatula(300, 5, -3, 2.2, f1, 0.3);
     const gecko::viscoelastic_detachment<double> law{0.8, 2.0, 0.5};
     for (double V : {0.1, 3.0})
       for (double t_off : {0.0, 0.05, 2.0}) {
