@@ -100,7 +100,7 @@ def main(argv=None):
         ok = z["status"] == 0
         checked = z["checked"]
         v_turns_beam, v_turns_spatula = z["v_turns_beam"], z["v_turns_spatula"]
-    elif "v_turns_beam" in z:  # a merged campaign
+    elif "Fn" in z:  # a merged campaign
         fn_equal = Fn.tobytes() == z["Fn"].tobytes()
         beta_equal = beta.tobytes() == z["beta"].tobytes()
         v = {k[2:]: z[k] for k in z.files if k.startswith("v_")}
