@@ -1,6 +1,7 @@
-// AVX-512F (8 doubles) instance of the SIMD elliptic loops (elliptic_simd_kernels.hpp), compiled
+// AVX-512F (2 x 8 doubles) instance of the SIMD elliptic loops (elliptic_simd_kernels.hpp), compiled
 // with -mavx512f -ffp-contract=off (src/bindings/CMakeLists.txt); called only where the CPU has it.
 #include "elliptic_simd.hpp"
+#include "elliptic_simd_pack.hpp"
 
 #if defined(GECKO_SIMD_X86)
 #include <immintrin.h>
@@ -8,7 +9,7 @@
 namespace gecko {
 namespace bindings {
 namespace simd_avx512 {
-struct pack {
+struct hw {
   using vd = __m512d;
   typedef long long vi __attribute__((vector_size(64)));
   static constexpr int W = 8;
@@ -16,6 +17,8 @@ struct pack {
   static vd sqrt(vd x) { return _mm512_maskz_sqrt_pd(0xff, x); }
   static bool any(vi m) { return _mm512_test_epi64_mask((__m512i)m, (__m512i)m) != 0; }
 };
+// two interleaved chains (32 zmm registers hold both): F and R_F about 1.2x faster than one (measured, E unchanged) (elliptic_simd_pack.hpp)
+using pack = wide_pack<hw, 2>;
 }  // namespace simd_avx512
 }  // namespace bindings
 }  // namespace gecko

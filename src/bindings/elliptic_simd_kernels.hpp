@@ -3,8 +3,9 @@
 //
 // Included by elliptic_simd_{sse,avx2,avx512}.cpp only, each compiled with its own ISA flags and
 // -ffp-contract=off, after defining GECKO_SIMD_NS (a namespace of its own, so that no inline
-// function of one ISA can stand in for another's at link time) and `struct pack` with
-//   vd (vector of W doubles), vi (vector of W int64), W, sqrt(vd), any(vi).
+// function of one ISA can stand in for another's at link time) and `pack`, a wide_pack of
+// elliptic_simd_pack.hpp: vd (vector of W doubles), vi (vector of W int64 masks), W, sqrt(vd),
+// any(vi), as_i / as_d (bit casts).
 // No standard-library function is called here for the same reason.
 //
 // The arithmetic is that of the scalar kernels, operation for operation (no contraction):
@@ -42,10 +43,12 @@ inline vi splat_i(long long x) {
   for (int i = 0; i < W; ++i) v[i] = x;
   return v;
 }
-inline vd select(vi mask, vd a, vd b) { return (vd)((mask & (vi)a) | (~mask & (vi)b)); }
-inline vd vabs(vd x) { return (vd)((vi)x & splat_i(0x7fffffffffffffffLL)); }
+inline vi as_i(vd x) { return pack::as_i(x); }
+inline vd as_d(vi m) { return pack::as_d(m); }
+inline vd select(vi mask, vd a, vd b) { return as_d((mask & as_i(a)) | (~mask & as_i(b))); }
+inline vd vabs(vd x) { return as_d(as_i(x) & splat_i(0x7fffffffffffffffLL)); }
 inline vd vcopysign(vd mag, vd sgn) {
-  return (vd)(((vi)mag & splat_i(0x7fffffffffffffffLL)) | ((vi)sgn & splat_i(-0x7fffffffffffffffLL - 1)));
+  return as_d((as_i(mag) & splat_i(0x7fffffffffffffffLL)) | (as_i(sgn) & splat_i(-0x7fffffffffffffffLL - 1)));
 }
 inline vd vmax(vd a, vd b) { return select(a < b, b, a); }  // max_of of carlson_arguments.hpp
 
@@ -233,19 +236,28 @@ inline vi legendre_ok(vd phi, vd m) {
   return not_nan(phi) & not_nan(m) & (vabs(p) <= pio2_below) & (q <= 1.0) & (q >= -dbl_max);
 }
 
+// The Legendre lanes shared by F and E: ok marks the lanes on the vector path; the others get a
+// benign phi = m = 1/2 (an infinite m would keep the duplication loop going) and are recomputed by
+// the scalar kernel. s, c: sin and cos of |phi|.
+struct legendre_lanes {
+  vd phi, m, s, c;
+  // always inlined: an out-of-line call passes the four vectors through memory (measured slower for E)
+  __attribute__((always_inline)) legendre_lanes(const vd* a, vi& ok) {
+    ok = legendre_ok(a[0], a[1]);
+    phi = select(ok, a[0], splat(0.5));
+    m = select(ok, a[1], splat(0.5));
+    first_quadrant_sincos(vabs(phi), s, c);
+  }
+};
+
 struct kernel_f {
   static constexpr int nin = 2;
   static constexpr double pad[2] = {0.5, 0.5};
   static vd eval(const vd* a, vi& ok) {
-    ok = legendre_ok(a[0], a[1]);
-    // lanes off the vector path compute a benign value (an infinite m would keep the loop going)
-    const vd phi = select(ok, a[0], splat(0.5)), m = select(ok, a[1], splat(0.5));
-    vd s, c;
-    first_quadrant_sincos(vabs(phi), s, c);
-    const vd c2 = c * c;
-    const vd d2 = c2 + (1.0 - m) * (s * s);
+    const legendre_lanes l(a, ok);
+    const vd d2 = l.c * l.c + (1.0 - l.m) * (l.s * l.s);
     ok &= d2 < 0x1p52;  // d2 >= 1/eps (m -> -inf): the scalar kernel's unscaled duplication
-    return vcopysign(legendre_rf(s, c, select(ok, d2, splat(1.0))), phi);
+    return vcopysign(legendre_rf(l.s, l.c, select(ok, d2, splat(1.0))), l.phi);
   }
 };
 
@@ -253,11 +265,8 @@ struct kernel_e {
   static constexpr int nin = 2;
   static constexpr double pad[2] = {0.5, 0.5};
   static vd eval(const vd* a, vi& ok) {
-    ok = legendre_ok(a[0], a[1]);
-    // lanes off the vector path compute a benign value (an infinite m would keep the loop going)
-    const vd phi = select(ok, a[0], splat(0.5)), m = select(ok, a[1], splat(0.5));
-    vd s, c;
-    first_quadrant_sincos(vabs(phi), s, c);
+    const legendre_lanes l(a, ok);
+    const vd s = l.s, c = l.c, m = l.m;
     const vd c2 = c * c;
     const vd s2 = s * s;
     const vd k2 = 1.0 - m;
@@ -268,7 +277,7 @@ struct kernel_e {
     rf_rd(c2, select(neg, d2, splat(1.0)), select(neg, splat(1.0), d2), rf, rd);
     const vd e_neg = s * (rf - (m / 3.0) * s2 * rd);
     const vd e_pos = s * (k2 * rf + (m * k2 / 3.0) * s2 * rd + m * c / pack::sqrt(d2));
-    return vcopysign(select(neg, e_neg, e_pos), phi);
+    return vcopysign(select(neg, e_neg, e_pos), l.phi);
   }
 };
 
@@ -279,7 +288,7 @@ struct kernel_rf {
     const vi num = not_nan(a[0]) & not_nan(a[1]) & not_nan(a[2]);
     const vd x = quiet(a[0], 1.0), y = quiet(a[1], 1.0), z = quiet(a[2], 1.0);
     const vd big = vmax(vmax(x, y), z);
-    const vi zeros = (vi)(x == 0.0) + (vi)(y == 0.0) + (vi)(z == 0.0);  // -1 per zero
+    const vi zeros = (x == 0.0) + (y == 0.0) + (z == 0.0);  // -1 per zero
     // not NaN, x, y, z >= 0, at most one zero, and the largest in the window where
     // gecko::carlson_rf does not rescale: 2^-967 <= largest < 2^1016 (carlson_scale_exponent)
     ok = num & (x >= 0.0) & (y >= 0.0) & (z >= 0.0) & (zeros >= -1) & (big >= 0x1p-967) & (big < 0x1p+1016);

@@ -97,21 +97,19 @@ def _edge_mix(n, rng):
 
 @pytest.mark.parametrize("name", ["ellint_f", "ellint_e"])
 def test_mixed_lanes_and_tails_match_the_scalar_kernel_at_every_level(level, name):
-    # every element equals the scalar entry point's answer for it (NaN where out of domain),
-    # for lengths that are not multiples of any vector width and for strided and aliased operands
+    # every element equals the scalar entry point's answer for it bit for bit (the vector lanes do
+    # the scalar kernel's arithmetic operation for operation, without contraction; the other lanes
+    # are the scalar kernel's), for lengths that are not multiples of any vector width (up to two
+    # AVX-512 registers, 16 doubles, and one more) and for strided and aliased operands
     rng = np.random.default_rng(11)
     u = getattr(ell.ufuncs, name)
     scalar = getattr(gecko._core, name + "_scalar")
     phi, m = _edge_mix(4003, rng)
+    phi[:1000], m[:1000] = rng.uniform(-np.pi / 2, np.pi / 2, 1000), rng.uniform(-5, 1, 1000)  # vector lanes
     want = np.array([scalar(float(p), float(q), 1) for p, q in zip(phi, m)])
-    fin = np.isfinite(want)
-    bound = 6 if name == "ellint_f" else 8
     for n in list(range(1, 18)) + [4003]:
         got = u(phi[:n], m[:n])
-        assert np.array_equal(np.isnan(got), np.isnan(want[:n])), n
-        g, w, k = got, want[:n], fin[:n]
-        assert np.all(np.abs(g[k] - w[k]) <= bound * EPS * np.abs(w[k])), n
-        assert np.array_equal(g[~k & ~np.isnan(w)], w[~k & ~np.isnan(w)]), n
+        assert np.array_equal(got.view(np.uint64), want[:n].view(np.uint64)), n
     ref = u(phi, m)
     out = np.empty(2 * len(phi))
     u(phi[::-1].copy()[::-1], m, out=out[::2])            # strided output
@@ -135,11 +133,7 @@ def test_carlson_rf_lanes_outside_the_vector_window(level):
     want = np.array([gecko._core.carlson_rf_scalar(float(a), float(b), float(c), 1) for a, b, c in zip(x, y, z)])
     for k in (1, 2, 3, 5, 7, 9, n):
         got = ell.ufuncs.carlson_rf(x[:k], y[:k], z[:k])
-        w = want[:k]
-        assert np.array_equal(np.isnan(got), np.isnan(w))
-        fin = np.isfinite(w) & (w != 0)
-        assert np.all(np.abs(got[fin] - w[fin]) <= 6 * EPS * np.abs(w[fin]))
-        assert np.array_equal(got[w == 0], w[w == 0])
+        assert np.array_equal(got.view(np.uint64), want[:k].view(np.uint64)), k  # bit for bit
 
 
 @pytest.mark.parametrize("name,nargs", [("ellint_f", 2), ("ellint_e", 2), ("carlson_rf", 3)])
