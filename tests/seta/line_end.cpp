@@ -143,3 +143,43 @@ TEST_CASE("the line reaches (Ft)max for random designs, and is solved there", "[
   WARN(n << " of 200 lines reached (Ft)max");
   CHECK(n == 200);
 }
+
+// A line that runs into the edge of the model's forms: followed towards negative Ft, the beam's
+// compression grows until f4 = 1 + b4 u of its first integral (paper 001 eq (8), c N^2 u^2/2 in
+// R) vanishes at u = -1 (b4 = 1, an axial load comparable to EA1). Past that the forms do not
+// exist, the corrector's plan evaluates to NaN at every predictor, and the step collapsed: the
+// line ended as no_convergence and its states beyond as not_reached (status 6, "unknown").
+// They are unsupported (status 3). Design 982 of the stress campaign
+// (validation/data/stress_10000_states.npz).
+TEST_CASE("a line that reaches the edge of the forms ends as unsupported, not as a failure",
+          "[seta][line_end][regression]") {
+  gecko::TwoLevelSeta<double> s;
+  s.EI1 = 0x1.d18b126d6817cp+1;
+  s.EI2 = 0x1.9c904de46d0ddp-7;
+  s.EA1 = 0x1.541473f9e15adp+4;
+  s.EA2 = 0x1.9735c8b3f3a1fp+21;
+  s.l1 = 1;
+  s.l2 = 0x1.7c097c9b3b924p-5;
+  s.alpha1 = 0x1.9ade7b9964e08p-1;
+  s.alpha2 = 0x1.648694b7485b6p-1;
+  s.w = 1;
+  const double Ft = -0x1.9bb0923a6fbd9p+10;
+  gecko::critical_line_options<double> opt;
+  opt.ft_end = Ft;
+  const auto line = gecko::critical_line(s, opt);
+  CHECK(line.end == gecko::line_end::unsupported_state);
+  REQUIRE(!line.points.empty());
+  const auto& last = line.points.back();
+  // Re-solved (the seta crosses the substrate there: inadmissible, a solved state all the same).
+  CHECK((last.status == gecko::critical_status::converged || last.status == gecko::critical_status::inadmissible));
+  // The edge: b4 = c N / (1 + sqrt(1 + 2 c M1)) = 1 with c = 1/EA1; the beam's M1 follows from
+  // the base (R1 = EI1 theta1'(0)^2 / 2 = M1 - N u0 - c N^2 u0^2 / 2, u0 = sin(alpha1 - phi)).
+  const double N = std::hypot(last.Fn, last.Ft), c = 1 / s.EA1;
+  const double u0 = std::sin(s.alpha1 - std::atan2(last.Fn, last.Ft));
+  const double M1 = s.EI1 * last.theta_rate_base * last.theta_rate_base / 2 + N * u0 + c * N * N * u0 * u0 / 2;
+  const double b4 = c * N / (1 + std::sqrt(1 + 2 * c * M1));
+  INFO("last node Ft " << last.Ft << " b4 " << b4);
+  CHECK(std::fabs(b4 - 1) < 1e-3);
+  const auto at = gecko::critical_line_at(s, std::vector<double>{Ft});
+  CHECK(at[0].status == gecko::critical_status::unsupported_state);
+}

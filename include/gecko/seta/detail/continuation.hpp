@@ -300,7 +300,13 @@ inline traced_line<System> follow_line(const System& sys, const typename System:
     if (!ok) {
       ds *= T(0.5);
       if (ds < ds_min) {
-        line.end = line_end::no_convergence;
+        // The step collapsed. Where even this shortest predictor leaves the forms for an axial
+        // load comparable to EA (f4's root reaching the path, gecko/seta/elastica_segment.hpp),
+        // the line has run into the edge of the model, not into a failure of the corrector:
+        // the corrector's plan, made a step before, evaluates to NaN past that edge and never
+        // converges. The states beyond are then unsupported (status 3), not unknown.
+        const bool edge = System::plan_state(sys.plan(xp.template head<n>(), xp[n])) == segment_state::unsupported;
+        line.end = edge ? line_end::unsupported_state : line_end::no_convergence;
         return line;
       }
       continue;
