@@ -2,7 +2,7 @@
 // (gecko/seta/detail/natural_state.hpp, gecko/seta/detail/homotopy_system.hpp). Designs 1072 and 362
 // of the stress campaign (validation/data/stress_10000_states.npz): a soft beam under a stiff
 // spatula, where the path that scales the angle deficit and sqrt(w) together runs into the edge of
-// the region the beam's forms cover (its plan turns infeasible) at lambda ~ 0.9. Before, every Ft of
+// the region the beam's forms cover (its plan turns infeasible) before lambda = 1. Before, every Ft of
 // these designs was status 1 (no natural state); now a path that reaches the full w first gets
 // there, and the state agrees with the independent RK4 shooting of the ODE (seta_shooting.hpp).
 #include <catch2/catch.hpp>
