@@ -175,9 +175,11 @@ struct fiber_system {
     z << Q / sa, (Meq + Q * l) / sqrt(2 * EI);
     return z;
   }
-  fiber_system at_homotopy(T lambda) const {
+  // lambda_w scales sqrt(w) separately (see seta_system::at_homotopy).
+  fiber_system at_homotopy(T lambda) const { return at_homotopy(lambda, lambda); }
+  fiber_system at_homotopy(T lambda, T lambda_w) const {
     const T Delta = seta_pi<T>() / 2 - alpha;
-    return fiber_system(EI, c, l, seta_pi<T>() / 2 - lambda * Delta, w * lambda * lambda);
+    return fiber_system(EI, c, l, seta_pi<T>() / 2 - lambda * Delta, w * lambda_w * lambda_w);
   }
   T theta_joint(const vec&) const { return std::numeric_limits<T>::quiet_NaN(); }
   T rate_joint(const vec&) const { return std::numeric_limits<T>::quiet_NaN(); }

@@ -156,7 +156,10 @@ struct seta_system {
   // The homotopy of the natural state: lambda in (0, 1] scales the angle deficit
   // pi/2 - alpha1 - alpha2 by lambda and w by lambda^2, so the state scales like lambda and is
   // given to O(lambda^2) by the linear theory as lambda -> 0.
-  seta_system at_homotopy(T lambda) const {
+  // lambda_w (default lambda) scales sqrt(w) separately: other paths to the same end at
+  // lambda = lambda_w = 1 (gecko/seta/detail/natural_state.hpp tries them when one stalls).
+  seta_system at_homotopy(T lambda) const { return at_homotopy(lambda, lambda); }
+  seta_system at_homotopy(T lambda, T lambda_w) const {
     seta_params<T> h = d;
     const T half_pi = seta_pi<T>() / 2;
     const T a12 = d.alpha1 + d.alpha2;
@@ -164,7 +167,7 @@ struct seta_system {
     const T extra = (1 - lambda) * Delta;
     h.alpha1 = d.alpha1 + extra * d.alpha1 / a12;
     h.alpha2 = d.alpha2 + extra * d.alpha2 / a12;
-    h.w = d.w * lambda * lambda;
+    h.w = d.w * lambda_w * lambda_w;
     set_seta_angles(h);
     return seta_system(h);
   }

@@ -1,0 +1,56 @@
+// The natural state at Ft = 0 where the paper's homotopy path stalls
+// (gecko/seta/detail/natural_state.hpp, gecko/seta/detail/homotopy_system.hpp). Designs 1072 and 362
+// of the stress campaign (validation/data/stress_10000_states.npz): a soft beam under a stiff
+// spatula, where the path that scales the angle deficit and sqrt(w) together runs into the edge of
+// the region the beam's forms cover (its plan turns infeasible) before lambda = 1. Before, every Ft of
+// these designs was status 1 (no natural state); now a path that reaches the full w first gets
+// there, and the state agrees with the independent RK4 shooting of the ODE (seta_shooting.hpp).
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "gecko/seta/critical_line.hpp"
+#include "seta/seta_shooting.hpp"
+
+namespace {
+
+gecko::TwoLevelSeta<double> design(double EI1, double EI2, double EA1, double EA2, double l2, double alpha1,
+                                   double alpha2) {
+  gecko::TwoLevelSeta<double> s;
+  s.EI1 = EI1; s.EI2 = EI2; s.EA1 = EA1; s.EA2 = EA2;
+  s.l1 = 1.0; s.l2 = l2; s.alpha1 = alpha1; s.alpha2 = alpha2; s.w = 1.0;
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("natural state found where the first homotopy path stalls", "[seta][natural][stress]") {
+  struct expect {
+    gecko::TwoLevelSeta<double> s;
+    gecko::critical_status status;  // 7: solved, but the seta crosses the substrate (values kept)
+  };
+  const expect cases[] = {
+      {design(0.80490286034451164, 353.10575466540189, 4986.756661468502, 27187449.501405418,
+              0.015771499064306242, 1.0205744073106919, 0.38255092568557925),
+       gecko::critical_status::converged},
+      {design(0.4862557085350056, 95.663642985073622, 12.962666584858646,
+              std::numeric_limits<double>::infinity(), 0.0069261819223409527, 1.196205214292706,
+              0.10533172401692666),
+       gecko::critical_status::inadmissible},
+  };
+  for (const auto& c : cases) {
+    gecko::critical_line_options<double> o;
+    o.ft_end = 0.0;
+    const auto line = gecko::critical_line(c.s, o);
+    INFO("EI1 " << c.s.EI1 << " status " << static_cast<int>(line.natural.status) << " Fn " << line.natural.Fn);
+    REQUIRE(line.natural.status == c.status);
+    REQUIRE(line.points.size() == 1);
+    const double Fn = line.natural.Fn;
+    // Independent check: the RK4 shooting's base-angle mismatch, as an error in Fn.
+    const long double err = seta_test::fn_error(c.s, Fn, 0.0);
+    CHECK(std::fabs(static_cast<double>(err)) <= 1e-8 * std::max(1.0, std::fabs(Fn)));
+    const auto shot = seta_test::shoot(c.s, Fn, 0.0L);
+    CHECK(std::fabs(static_cast<double>(shot.theta_joint) - line.natural.theta_joint) <= 1e-8);
+  }
+}
