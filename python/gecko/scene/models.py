@@ -112,17 +112,14 @@ CHARACTERISTIC_LABELS = {
     "fn0": "$(\\bar F_n)_0$",
     "small_fn0": "$(\\bar F_n)_0$, small deformation (eq 19)",
     "slope_at_zero": "slope $d\\bar F_n/d\\bar F_t$ at $\\bar F_t = 0$",
-    "slope_k": "slope $d\\bar F_n/d\\bar F_t$ at $\\bar F_t = 0$",
     "paper_k": "paper's slope $k$ (eq 16)",
     "small_slope_k": "slope $k$, small deformation (eq 18)",
     # The paper's plots have Fn horizontal and show "1/|k|" (Fig 5b); the figure scene draws |dFn/dFt|
     # at Ft = 0 there (docs/theory/two_level_seta.md, "The slope k").
     "abs_slope_at_zero": "$|d\\bar F_n/d\\bar F_t|$ at $\\bar F_t = 0$ (the paper's $1/|k|$)",
-    "abs_slope_k": "$|d\\bar F_n/d\\bar F_t|$ at $\\bar F_t = 0$ (the paper's $1/|k|$)",
     "abs_paper_k": "$|k|$, the paper's slope (eq 16)",
     "small_abs_slope_k": "$|d\\bar F_n/d\\bar F_t|$, small deformation (eq 21)",
     "inv_abs_slope_at_zero": "$1/|d\\bar F_n/d\\bar F_t|$ at $\\bar F_t = 0$",
-    "inv_abs_k": "$1/|d\\bar F_n/d\\bar F_t|$ at $\\bar F_t = 0$",
     "inv_abs_paper_k": "$1/|k|$, the paper's slope (eq 16)",
     "small_inv_abs_k": "$1/|d\\bar F_n/d\\bar F_t|$, small deformation",
     "max_pull_off": "max pull-off $|\\bar F_n|$",
@@ -135,6 +132,8 @@ CHARACTERISTIC_LABELS = {
     "small_contact_length": "contact length $l_c$ (eq 7)",
     "small_non_sticky": "non-sticky at rest (eq 22)",
 }
+# the deprecated aliases are labelled as what they are now called (one text per quantity)
+CHARACTERISTIC_LABELS.update({old: CHARACTERISTIC_LABELS[new] for old, new in RENAMED.items()})
 
 DEFAULT_K = ((5.0, -3.0), (-3.0, 2.0))
 
