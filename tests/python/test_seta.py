@@ -107,6 +107,26 @@ def test_traced_line_and_characteristics():
     assert s.small_deformation_fn(0.0) == pytest.approx(c.small_fn0)
 
 
+def test_small_deformation_slope_is_the_papers_eq_21():
+    # Paper 001 eq 21, as printed in the paper's groups (chi = l2/l1, xi = EI2/EI1):
+    #   |k| = cot(a1 + a2) + sin a2 / (sin^2(a1 + a2) [chi^2/xi + 2 chi + sin a1 / sin(a1 + a2)]).
+    # It is |dFn/dFt| of eq 18, so the k of eq 16 (whose right side the scan loses) is dFn/dFt and
+    # Fn ~ (Fn)0 + k Ft with k < 0 here; were k = dFt/dFn, this magnitude would be 1/|k|.
+    rng = np.random.default_rng(21)
+    for _ in range(200):
+        a1, a2 = rng.uniform(0.05, 0.7, 2)
+        if a1 + a2 >= math.pi / 2 - 0.05:
+            continue
+        EI1, EI2 = rng.uniform(0.5, 20), rng.uniform(0.05, 10)
+        l2 = rng.uniform(0.02, 0.5)
+        s = gecko.TwoLevelSeta(EI1=EI1, EI2=EI2, l2=l2, alpha1=a1, alpha2=a2)
+        chi, xi, a12 = l2 / 1.0, EI2 / EI1, a1 + a2
+        eq21 = 1 / math.tan(a12) + math.sin(a2) / (
+            math.sin(a12) ** 2 * (chi * chi / xi + 2 * chi + math.sin(a1) / math.sin(a12)))
+        k = s.small_deformation()["slope_k"]
+        assert k < 0 and -k == pytest.approx(eq21, rel=1e-13)
+
+
 def test_traced_nodes_carry_a_status():
     # Reference scene: every node re-solved (status 0) and equal to the state solved at its Ft; the
     # end node at (Ft)max is solved too but inadmissible (7: the joint dips below the substrate).
