@@ -315,10 +315,17 @@ def sweep(designs, outputs: Optional[Sequence[str]] = None, *, out: Optional[Uni
     0     0.3  2.3606        0.0000       0
     1     0.5  0.4935        2.4502       0
     """
+    warn_renamed(_check_outputs(outputs), "gecko.sweep outputs")  # once per call, at the caller's line
+    return _sweep(designs, outputs, out=out, chunk_size=chunk_size, threads=threads, client=client,
+                  executor=executor, connect_timeout=connect_timeout, errors=errors, progress=progress)
+
+
+def _sweep(designs, outputs, *, out, chunk_size, threads, client, executor, connect_timeout, errors, progress):
+    """:func:`sweep` without its deprecation warning: for callers that warned of a renamed output in
+    their own terms already (a scene warns with the key it was parsed from)."""
     pd = _need("pandas", "gecko.sweep")
     t0 = time.perf_counter()
     outputs = _check_outputs(outputs)
-    warn_renamed(outputs, "gecko.sweep outputs")  # once per call, at the caller's line
     if errors not in ("raise", "nan"):
         raise ValueError(f"errors = {errors!r} is not allowed: need 'raise' or 'nan'")
     if isinstance(chunk_size, bool) or not isinstance(chunk_size, (int, np.integer)) or chunk_size < 1:

@@ -11,7 +11,6 @@ import io
 import os
 import shutil
 import time
-import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Dict, List, Optional, Sequence
@@ -429,16 +428,13 @@ def _sweep_folder(sc: Scene, out: Path) -> Path:
 
 
 def _run_sweep(sc: Scene, out: Optional[os.PathLike], threads: int, progress: Optional[bool]):
-    from ..design_sweep import sweep
+    from ..design_sweep import _sweep  # the scene warned of a deprecated output with its key when parsed
     spec = sc.sweep
     try:
-        designs = spec.design_table()
-        with warnings.catch_warnings():  # a deprecated output was warned of with its key when parsed
-            warnings.filterwarnings("ignore", message=r"gecko\.sweep outputs: ", category=DeprecationWarning)
-            return sweep(designs, spec.outputs, out=None if out is None else _sweep_folder(sc, Path(out)),
-                         chunk_size=spec.chunk_size, threads=threads,
-                         executor=None if spec.executor == "threads" else spec.executor,
-                         connect_timeout=spec.connect_timeout, errors=spec.errors, progress=progress)
+        return _sweep(spec.design_table(), spec.outputs, out=None if out is None else _sweep_folder(sc, Path(out)),
+                      chunk_size=spec.chunk_size, threads=threads, client=None,
+                      executor=None if spec.executor == "threads" else spec.executor,
+                      connect_timeout=spec.connect_timeout, errors=spec.errors, progress=progress)
     except ValueError as exc:  # a design the kernels refuse, a bad table: name the section
         raise SceneError(str(exc), key="sweep", source=sc.source) from None
 
