@@ -39,6 +39,7 @@ from . import _core
 from ._vectorize import error_code as _error_code, vectorised as _vectorised, with_index as _with_index
 from ._vectorize import check_count as _check_count, check_tolerance as _check_tolerance
 from ._vectorize import real_array as _real_array
+from ._renamed import warn_renamed
 
 __all__ = [
     "TwoLevelSeta", "SingleFiber", "CriticalLine", "SetaCharacteristics", "kendall_fn", "rivlin_fn",
@@ -194,7 +195,8 @@ class SetaCharacteristics:
     fn0 : float
         (Fn)0, the critical Fn at Ft = 0 (> 0: not sticky at rest).
     slope_k : float
-        Deprecated alias of ``slope_at_zero`` (it is not the paper's k; see ``paper_k``).
+        Deprecated alias of ``slope_at_zero`` (it is not the paper's k; see ``paper_k``): a
+        read-only property that raises a DeprecationWarning; not a field of the dataclass.
     min_fn, ft_at_min_fn : float
         The minimum of Fn along the line followed from Ft = 0, and where it occurs.
     min_fn_interior : bool
@@ -251,7 +253,6 @@ class SetaCharacteristics:
     """
 
     fn0: float
-    slope_k: float
     min_fn: float
     ft_at_min_fn: float
     min_fn_interior: bool
@@ -277,6 +278,11 @@ class SetaCharacteristics:
     paper_k: float = math.nan
     max_pull_off_is_bound: bool = False
     max_pull_off_bound: float = math.nan
+
+    @property
+    def slope_k(self) -> float:
+        warn_renamed(["slope_k"], "SetaCharacteristics")  # issue 13: it is not the paper's k
+        return self.slope_at_zero
 
 
 #: Status of a contact state (``TwoLevelSeta.contact_state``), bound from C++
@@ -685,6 +691,7 @@ class TwoLevelSeta:
         d["end"] = _LINE_END.get(d["end"], str(d["end"]))
         d["min_status"] = _MIN_STATUS.get(d["min_status"], str(d["min_status"]))
         d["folds"] = list(d["folds"])
+        del d["slope_k"]  # the same value as slope_at_zero, which the deprecated property returns
         return SetaCharacteristics(**d)
 
     def sensitivities(self, Ft) -> dict:
