@@ -15,6 +15,7 @@ import argparse
 import os
 import sys
 import time
+import warnings
 from pathlib import Path
 from typing import List, Optional
 
@@ -196,6 +197,15 @@ def main(argv: Optional[List[str]] = None) -> int:
     ...
     0
     """
+    with warnings.catch_warnings():
+        if not sys.warnoptions:  # the user's -W or PYTHONWARNINGS decide otherwise
+            # A deprecated key in a scene is the user's own input: show its warning, which Python's
+            # default filters hide because it is raised inside gecko, not in __main__.
+            warnings.filterwarnings("default", category=DeprecationWarning, module=r"gecko(\.|$)")
+        return _main(argv)
+
+
+def _main(argv: Optional[List[str]]) -> int:
     os.environ.setdefault("MPLBACKEND", "Agg")  # never open a window
     parser = _parser()
     args = parser.parse_args(argv)

@@ -2,6 +2,7 @@
 import importlib.util
 import subprocess
 import sys
+import warnings
 from pathlib import Path
 
 import pytest
@@ -100,3 +101,17 @@ def test_resolution_from_environment(tmp_path, monkeypatch, capsys):
     monkeypatch.setenv("GECKO_RESOLUTION", "lots")
     assert main(["plan", str(DEMO)]) == 2  # like a bad --resolution
     assert "GECKO_RESOLUTION: 'lots' is not a number" in capsys.readouterr().err
+
+
+def test_run_shows_a_scenes_deprecation_warning(tmp_path, capsys):
+    # Python's default filters hide a DeprecationWarning raised inside a library; under `gecko run`
+    # the scene's deprecated key is the user's input, so the command shows it.
+    scene = tmp_path / "dep.toml"
+    scene.write_text('title = "dep"\n[[study]]\nname = "seta"\nmodel = "two_level_seta"\n'
+                     'outputs = { characteristics = ["slope_k"] }\n')
+    with warnings.catch_warnings(record=True) as seen:
+        warnings.resetwarnings()
+        warnings.simplefilter("ignore", DeprecationWarning)  # as a plain interpreter has it
+        assert main(["run", str(scene), "--out", str(tmp_path / "out"), "--quiet"]) == 0
+    assert [str(w.message) for w in seen if issubclass(w.category, DeprecationWarning)] == [
+        "scene study[0].outputs.characteristics: 'slope_k' is deprecated, use 'slope_at_zero' (the same values)"]
