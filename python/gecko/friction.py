@@ -32,6 +32,7 @@ import numpy as np
 from . import _core
 from ._vectorize import error_code as _error_code, flat_args as _flat_args, shaped as _shaped
 from ._vectorize import check_count as _check_count, real_array as _real_array
+from ._vectorize import vectorised as _vectorised
 
 #: outcome of a Levenberg-Marquardt fit, an IntEnum bound from C++ (gecko/friction/fit.hpp)
 FitStatus = _core.FitStatus
@@ -578,8 +579,7 @@ def viscoelastic_detachment(V, G0, V_star, n, *, errors: str = "raise"):
     >>> float(gecko.viscoelastic_detachment(4.0, 1.0, 1.0, 0.5))
     3.0
     """
-    shape, flat = _flat_args((V, G0, V_star, n))
-    return _shaped(_core.viscoelastic_detachment(*flat, _error_code(errors)), shape)
+    return _vectorised(_core.viscoelastic_detachment, V, G0, V_star, n, errors=errors)
 
 
 def eyring_detachment(V, G0, V_star, *, errors: str = "raise"):
@@ -610,8 +610,7 @@ def eyring_detachment(V, G0, V_star, *, errors: str = "raise"):
     >>> round(float(gecko.eyring_detachment(1.0, 1.0, 1.0)), 6)
     0.881374
     """
-    shape, flat = _flat_args((V, G0, V_star))
-    return _shaped(_core.eyring_detachment(*flat, _error_code(errors)), shape)
+    return _vectorised(_core.eyring_detachment, V, G0, V_star, errors=errors)
 
 
 @dataclasses.dataclass(frozen=True)
@@ -695,8 +694,7 @@ def detachment_stretch(K_par_par, f_par1, G, *, errors: str = "raise"):
     >>> float(gecko.detachment_stretch(2.0, 0.0, 1.0))
     1.0
     """
-    shape, flat = _flat_args((K_par_par, f_par1, G))
-    return _shaped(_core.detachment_stretch(*flat, _error_code(errors)), shape)
+    return _vectorised(_core.detachment_stretch, K_par_par, f_par1, G, errors=errors)
 
 
 def resonant_frequency(D, L, E, rho, *, errors: str = "raise"):
@@ -730,8 +728,7 @@ def resonant_frequency(D, L, E, rho, *, errors: str = "raise"):
     >>> round(float(gecko.resonant_frequency(100e-9, 1e-6, 1.5e9, 1000.0)) / 1e6, 1)
     17.1
     """
-    shape, flat = _flat_args((D, L, E, rho))
-    return _shaped(_core.resonant_frequency(*flat, _error_code(errors)), shape)
+    return _vectorised(_core.resonant_frequency, D, L, E, rho, errors=errors)
 
 
 # ---- steady sliding (eqs 5, 6, 9, 10) --------------------------------------------------------

@@ -247,19 +247,11 @@ py::tuple steady_sliding_energy_imp(const darray& V, const darray& G, double N, 
   return out.result();
 }
 
+// out[i] = f(a[i], b[i], c[i], d[i]) through the shared element loop (vectorize.hpp), so that an
+// out-of-range element is named by its index like every other elementwise call.
 template <class F>
 py::array_t<double> map4(const darray& a, const darray& b, const darray& c, const darray& d, F f) {
-  const py::ssize_t n = a.size();
-  require_equal(n, b, "arguments");
-  require_equal(n, c, "arguments");
-  require_equal(n, d, "arguments");
-  py::array_t<double> out(n);
-  double* o = out.mutable_data();
-  const double *pa = a.data(), *pb = b.data(), *pc = c.data(), *pd = d.data();
-  parallel_for(n, [&](py::ssize_t lo, py::ssize_t hi) {
-    for (py::ssize_t i = lo; i < hi; ++i) o[i] = f(pa[i], pb[i], pc[i], pd[i]);
-  });
-  return out;
+  return map_elements(f, 0, a, b, c, d);
 }
 
 }  // namespace

@@ -353,34 +353,17 @@ void bind_seta(py::module_& m) {
     return small_deformation(design_from(params));
   }, py::arg("params"));
 
+  // Through the shared element loop (vectorize.hpp): an out-of-range element is named by its index.
   m.def("kendall_fn", [](const darray& Ft, const darray& EA, const darray& w, int errors) {
-    const py::ssize_t n = Ft.size();
-    if (EA.size() != n || w.size() != n) throw std::invalid_argument("gecko._core: array arguments must have equal length");
-    py::array_t<double> out(n);
-    double* o = out.mutable_data();
-    const double *a = Ft.data(), *b = EA.data(), *c = w.data();
-    {
-      py::gil_scoped_release release;
-      for (py::ssize_t i = 0; i < n; ++i)
-        o[i] = errors == static_cast<int>(on_error::nan) ? kendall_fn(a[i], b[i], c[i], nan_policy())
-                                                         : kendall_fn(a[i], b[i], c[i], default_policy());
-    }
-    return out;
+    if (errors == static_cast<int>(on_error::nan))
+      return map_elements([](double a, double b, double c) { return kendall_fn(a, b, c, nan_policy()); }, 0, Ft, EA, w);
+    return map_elements([](double a, double b, double c) { return kendall_fn(a, b, c, default_policy()); }, 0, Ft, EA, w);
   }, py::arg("Ft"), py::arg("EA"), py::arg("w"), py::arg("errors") = 0);
 
   m.def("rivlin_fn", [](const darray& Ft, const darray& w, int errors) {
-    const py::ssize_t n = Ft.size();
-    if (w.size() != n) throw std::invalid_argument("gecko._core: array arguments must have equal length");
-    py::array_t<double> out(n);
-    double* o = out.mutable_data();
-    const double *a = Ft.data(), *c = w.data();
-    {
-      py::gil_scoped_release release;
-      for (py::ssize_t i = 0; i < n; ++i)
-        o[i] = errors == static_cast<int>(on_error::nan) ? rivlin_fn(a[i], c[i], nan_policy())
-                                                         : rivlin_fn(a[i], c[i], default_policy());
-    }
-    return out;
+    if (errors == static_cast<int>(on_error::nan))
+      return map_elements([](double a, double c) { return rivlin_fn(a, c, nan_policy()); }, 0, Ft, w);
+    return map_elements([](double a, double c) { return rivlin_fn(a, c, default_policy()); }, 0, Ft, w);
   }, py::arg("Ft"), py::arg("w"), py::arg("errors") = 0);
 }
 

@@ -144,3 +144,17 @@ def test_refused_types_are_value_errors_too(tmp_path):
     scene = {"sweep": {"designs": "table", "table": str(table), "outputs": ["ft_max"]}}
     with pytest.raises(SceneError, match=r"sweep: designs\['EI1'\]: '5' \(str\) is not allowed \(at index 0\)"):
         run_scene(scene, progress=False)
+
+
+@pytest.mark.parametrize("call, where", [
+    (lambda: seta.kendall_fn([[1.0, 2.0], [3.0, 1e3]], 50.0, 1.0), r"Ft = 1000 .*\(at index \(1, 1\)\)$"),
+    (lambda: seta.rivlin_fn([1.0, 2.0, -3.0], 1.0), r"Ft = -3 .*\(at index 2\)$"),
+    (lambda: friction.viscoelastic_detachment([1.0, 2.0], [[1.0], [-1.0]], 1.0, 0.5), r"\(at index \(1, 0\)\)$"),
+    (lambda: friction.eyring_detachment([1.0, -2.0], 1.0, 1.0), r"\(at index 1\)$"),
+    (lambda: friction.detachment_stretch(1.0, 1.0, [1.0, 1.0, -1.0]), r"\(at index 2\)$"),
+    (lambda: friction.resonant_frequency([1.0, 0.0], 1.0, 1.0, 1.0), r"\(at index 1\)$"),
+])
+def test_the_elementwise_laws_name_the_bad_elements_index(call, where):
+    # the same element loop as every other elementwise call: the index in the caller's broadcast shape
+    with pytest.raises(ValueError, match=where):
+        call()
