@@ -39,6 +39,7 @@ Per state:
 * ``undecided``: some grid signs are below the shot's error estimate (stiff shots at large |Fn|).
 
     python3 -m validation.claims --sample 40 [--seed 1] [--grid 61] [--json validation/results/claims.json]
+    python3 -m validation.claims --npz NEW.npz --since OLD.npz --json F.json   (every new claim)
 """
 from __future__ import annotations
 
@@ -180,12 +181,25 @@ def sample_claims(z, n: int, seed: int):
     return picks
 
 
-def run(n: int, seed: int = 1, grid: int = 61, npz: str = STATES, progress: bool = False) -> dict:
+def new_claims(z, old) -> list:
+    """Every (design, column) whose status is 2 or 3 in ``z`` and was something else in ``old`` (a
+    ``validation.recheck --save`` file of an earlier solver on the same states): the claims a
+    solver change made, all of them rather than a sample."""
+    st, so = z["status"], old["status"]
+    if st.shape != so.shape or not np.array_equal(z["P"], old["P"]) or not np.array_equal(z["FT"], old["FT"]):
+        raise SystemExit("--since: the two files hold different states (designs or Ft differ)")
+    return [tuple(map(int, ij)) for ij in np.argwhere(np.isin(st, (2, 3)) & (st != so))]
+
+
+def run(n: int, seed: int = 1, grid: int = 61, npz: str = STATES, progress: bool = False,
+        since: str = None) -> dict:
     z = np.load(npz)
     P, FT, ST = z["P"], z["FT"], z["status"]
     t0 = time.time()
     states = []
-    for k, (i, j) in enumerate(sample_claims(z, n, seed)):
+    picks = new_claims(z, np.load(since)) if since else sample_claims(z, n, seed)
+    n = len(picks)
+    for k, (i, j) in enumerate(picks):
         p, ft, status = P[i], float(FT[i, j]), int(ST[i, j])
         sc = scan_state(p, ft, grid)
         verdict = classify(sc)
@@ -211,8 +225,11 @@ def main(argv=None):
     ap.add_argument("--grid", type=int, default=61)
     ap.add_argument("--npz", default=STATES)
     ap.add_argument("--json", default=OUT)
+    ap.add_argument("--since", default=None, metavar="OLD.npz",
+                    help="check every state whose status became 2 or 3 since OLD.npz (both from "
+                         "validation.recheck --save) instead of a sample")
     args = ap.parse_args(argv)
-    res = run(args.sample, args.seed, args.grid, args.npz, progress=True)
+    res = run(args.sample, args.seed, args.grid, args.npz, progress=True, since=args.since)
     print(json.dumps(res["counts"], indent=1))
     with open(args.json, "w") as f:
         json.dump(res, f, indent=1, allow_nan=True)
