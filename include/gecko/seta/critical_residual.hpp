@@ -19,6 +19,7 @@
 #pragma once
 
 #include <cmath>
+#include <limits>
 
 #include "gecko/core/policy.hpp"
 #include "gecko/seta/detail/dual.hpp"
@@ -178,11 +179,18 @@ inline void seta_residual(const seta_params<D>& d, const S& Fn, const S& beta, c
   }
 }
 
+// solved: the state solves the equations (a node of a followed line), so the segments' lengths
+// are l1 and l2 there, which fixes each libration's period count (plan_segment's target).
 template <class Policy, bool E1, bool E2, class T>
-inline seta_plan plan_seta(const seta_params<T>& d, T Fn, T beta, T p, T q, T Ft, T edge) {
+inline seta_plan plan_seta(const seta_params<T>& d, T Fn, T beta, T p, T q, T Ft, T edge, bool solved = false) {
   const auto g = make_seta_geometry<E1, E2>(d, Fn, beta, p, q, Ft, edge, true);
-  return {plan_segment<Policy>(g.beam, g.psi_s1, g.X3_s1, g.psi_e1, g.X3_e1),
-          plan_segment<Policy>(g.spatula, g.psi_s2, g.X3_s2, g.psi_e2, g.X3_e2)};
+  const T nan = std::numeric_limits<T>::quiet_NaN();
+  T* const no_length = nullptr;
+  const libration_end<T>* const no_end = nullptr;
+  return {plan_segment<Policy>(g.beam, g.psi_s1, g.X3_s1, g.psi_e1, g.X3_e1, T(0.75), no_length, no_end,
+                               solved ? d.l1 : nan),
+          plan_segment<Policy>(g.spatula, g.psi_s2, g.X3_s2, g.psi_e2, g.X3_e2, T(0.75), no_length, no_end,
+                               solved ? d.l2 : nan)};
 }
 
 template <bool E1, bool E2, class T>

@@ -397,10 +397,13 @@ inline bool make_libration_end(const segment_constants<T, E>& g, T psi_e, T X3e,
 // periods, as segment_length would measure it; only for a phase plan: a direct plan's length is
 // the direct form's). end_e: where given, the end (psi_e, X3e) measured before
 // (make_libration_end with the same g and end), used on a libration.
+// target: where given (not NaN), the segment's length at the state, which is then a solved state
+// (a node of a followed line): see the period choice below.
 template <class Policy, class T, bool E>
 inline segment_plan plan_segment(const segment_constants<T, E>& g, T psi_s, T X3s, T psi_e, T X3e,
                                  T direct_limit = T(0.75), T* length = nullptr,
-                                 const libration_end<T>* end_e = nullptr) {
+                                 const libration_end<T>* end_e = nullptr,
+                                 T target = std::numeric_limits<T>::quiet_NaN()) {
   using std::asin; using std::cos; using std::fabs; using std::floor; using std::sin;
   const T pi = seta_pi<T>();
   const T two_pi = 2 * pi;
@@ -441,6 +444,17 @@ inline segment_plan plan_segment(const segment_constants<T, E>& g, T psi_s, T X3
     const T ts = libration_phase<Policy>(g, a, X4top, K, plan.rep_s, ps, X3s);
     const T te = end_e ? end_e->phase : libration_phase<Policy>(g, a, X4top, K, plan.rep_e, pe, X3e);
     plan.periods = te - ts > 0 ? 0 : 1;
+    // The phases are defined modulo the period 4K (and the forms of the two sides of a turning
+    // point name one point by phases 4K apart), so they alone cannot tell a path of te - ts from
+    // one a period longer: where the ends' phases coincide (a segment about one libration long,
+    // paper 001 eq (15) with l = 4K), the rule above drops a period as soon as te passes ts, and
+    // the length jumps by 4K between two states of one line (the continuation then never
+    // converges past them). At a solved state the length is known, and the period count is the
+    // one that gives it.
+    if (target == target) {
+      const T n = floor((target - (te - ts)) / (4 * K) + T(0.5));
+      if (n > plan.periods && n < 4) plan.periods = static_cast<int>(n);
+    }
     L = te - ts + 4 * plan.periods * K;
     quarter = K;
     // Turning points: phases 0 and 2K (mod 4K) strictly inside (ts, ts + L).
@@ -517,7 +531,9 @@ inline int segment_turning_points(const segment_constants<T, E>& g, const segmen
   const T K = quarter_libration<Policy>(g, X4top);
   const T ts = libration_phase<Policy>(g, a, X4top, K, plan.rep_s, psi_s - phase_shift(plan.rep_s, psi_s) * two_pi, X3s);
   const T te = libration_phase<Policy>(g, a, X4top, K, plan.rep_e, psi_e - phase_shift(plan.rep_e, psi_e) * two_pi, X3e);
-  return te > ts ? within_period + 2 * plan.periods : within_period;
+  // te - ts + 4K periods: with te > ts every added period passes two turning points, with te < ts
+  // the first added period only closes the path.
+  return te > ts ? within_period + 2 * plan.periods : within_period + 2 * (plan.periods - 1);
 }
 
 // Is a plan still right at a (converged) state? u14: the direct form's U14 there.

@@ -90,7 +90,8 @@ struct fiber_system {
   // Geometry and residual of the fiber (see the header comment).
   template <class S>
   void residual_imp(const S& Fn, const S& q, const S& Ft, const S& edge, const segment_plan& plan, S F[2],
-                    T* u14, bool angles_only_plan, segment_plan* planned, T* h_out) const {
+                    T* u14, bool angles_only_plan, segment_plan* planned, T* h_out,
+                    T target = std::numeric_limits<T>::quiet_NaN()) const {
     using std::atan2; using std::sqrt;
     const S N = sqrt(Fn * Fn + Ft * Ft);
     const S cphi = Ft / N, sphi = Fn / N;
@@ -110,7 +111,11 @@ struct fiber_system {
     }
     if (h_out) *h_out = (seta_pi<T>() / 2 - alpha) / 2;
     if (planned) {
-      if constexpr (!is_dual<S>::value) *planned = plan_segment<Policy>(g, psi_s, X3s, psi_e, X3e);
+      if constexpr (!is_dual<S>::value) {
+        T* const no_length = nullptr;
+        const libration_end<T>* const no_end = nullptr;
+        *planned = plan_segment<Policy>(g, psi_s, X3s, psi_e, X3e, T(0.75), no_length, no_end, target);
+      }
       return;
     }
     T u = 1;
@@ -144,6 +149,16 @@ struct fiber_system {
     segment_plan p;
     T F[2];
     residual_imp(z[0], z[1], Ft, edge, p, F, nullptr, true, &p, nullptr);
+    return p;
+  }
+  // The plan at a solved state (a node of a followed line): the length l fixes the libration's
+  // period count there (plan_segment's target; see seta_system::plan_solved).
+  plan_type plan_solved(const vec& z, T mu) const {
+    T Ft, edge;
+    forces(mu, Ft, edge);
+    segment_plan p;
+    T F[2];
+    residual_imp(z[0], z[1], Ft, edge, p, F, nullptr, true, &p, nullptr, l);
     return p;
   }
   static segment_state plan_state(const plan_type& p) { return p.state; }

@@ -318,9 +318,11 @@ inline traced_line<System> follow_line(const System& sys, const typename System:
     }
     // A fresh plan for the next step: a phase plan kept from a turning-point state would follow
     // the state into the libration/rotation change of a now monotone segment (K -> infinity),
-    // where the direct form has no difficulty.
+    // where the direct form has no difficulty. x solves the equations, so the segments' lengths
+    // fix the period counts of the fresh plan (plan_solved): the phases alone drop a period where
+    // the ends' phases coincide, and the residual would jump by 4K from this node to the next.
     {
-      const auto fresh = sys.plan(x.template head<n>(), x[n]);
+      const auto fresh = sys.plan_solved(x.template head<n>(), x[n]);
       if (System::plan_state(fresh) == segment_state::ok) p = fresh;
     }
     advanced += (x - x0).norm();

@@ -72,6 +72,7 @@ struct homotopy_system {
     return dF_dmu->allFinite();
   }
   plan_type plan(const vec& z, T mu) const { return at(mu).plan(z, T(0)); }
+  plan_type plan_solved(const vec& z, T mu) const { return at(mu).plan_solved(z, T(0)); }
   static segment_state plan_state(const plan_type& p) { return System::plan_state(p); }
   bool plan_valid(const plan_type& p, const vec& z, T mu, const T u14[2]) const {
     return at(mu).plan_valid(p, z, T(0), u14);

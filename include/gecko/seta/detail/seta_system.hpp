@@ -105,6 +105,13 @@ struct seta_system {
     forces(mu, Ft, edge);
     return plan_seta<Policy, E1, E2>(d, z[0], z[1], z[2], z[3], Ft, edge);
   }
+  // The plan at a state that solves the equations (a node of the followed line): the lengths
+  // l1, l2 fix the libration period counts there (plan_seta).
+  plan_type plan_solved(const vec& z, T mu) const {
+    T Ft, edge;
+    forces(mu, Ft, edge);
+    return plan_seta<Policy, E1, E2>(d, z[0], z[1], z[2], z[3], Ft, edge, true);
+  }
   static segment_state plan_state(const plan_type& p) {
     if (p.beam.state == segment_state::unsupported || p.spatula.state == segment_state::unsupported)
       return segment_state::unsupported;

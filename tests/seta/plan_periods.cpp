@@ -1,0 +1,53 @@
+// The libration period count of a refreshed plan (gecko/seta/elastica_segment.hpp plan_segment,
+// gecko/seta/detail/continuation.hpp follow_line). Campaign designs 413, 437 and 528 of the stress
+// campaign (validation/data/stress_10000_states.npz), each at its negative Ft: a segment of the
+// line followed towards negative Ft is about one libration long (paper 001 eq (15) with l = 4K),
+// its ends' phases coincide, and the plan refreshed after a node chose its period count from the
+// phases alone. It dropped the period as the end phase passed the start phase (or as an end moved
+// to the form of the other side of a turning point, which names the same point by a phase 4K
+// apart), the length residual jumped by 4K from one node to the next, and the line ended as
+// no_convergence: these states were status 6 (not reached). Now the refreshed plan takes its
+// period count from the segment's length at the node, and the states agree with the RK4 shooting
+// of the ODE (seta_shooting.hpp).
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "gecko/seta/critical_line.hpp"
+#include "seta/seta_shooting.hpp"
+
+namespace {
+
+struct period_case {
+  double EI1, EI2, EA1, EA2, l2, alpha1, alpha2, Ft;
+};
+
+}  // namespace
+
+TEST_CASE("a line whose segment is one libration long keeps its period count", "[seta][line][stress]") {
+  const period_case cases[] = {
+      {26.49198234895262, 0.2482999324116493, 12502.835171187016, 3652577.6559803374, 0.02827686290340751,
+       1.1636933363048867, 0.12714903335425107, -1449.6527083579476},
+      {2.1304496130947532, 0.00408939279640268, 1335.5722906500189, 687.9960275331455, 0.07992537431484655,
+       1.2091877915657692, 0.2557590570667968, -35.97813592169937},
+      {4.016807922700496, 0.3797143314374259, 11771325.138693243, 4978.413142805896, 0.5852586607649094,
+       1.0796046787514415, 0.22435793941112436, -54.87132672250153},
+  };
+  for (const auto& c : cases) {
+    gecko::TwoLevelSeta<double> s;
+    s.EI1 = c.EI1; s.EI2 = c.EI2; s.EA1 = c.EA1; s.EA2 = c.EA2;
+    s.l1 = 1.0; s.l2 = c.l2; s.alpha1 = c.alpha1; s.alpha2 = c.alpha2; s.w = 1.0;
+    const auto st = gecko::critical_line_at(s, std::vector<double>{c.Ft})[0];
+    INFO("EI1 " << s.EI1 << " Ft " << c.Ft << " status " << static_cast<int>(st.status) << " Fn " << st.Fn);
+    REQUIRE(st.status == gecko::critical_status::converged);
+    // Independent check: the RK4 shooting's base-angle mismatch, as an error in Fn.
+    const long double err = seta_test::fn_error(s, st.Fn, c.Ft);
+    CHECK(std::fabs(static_cast<double>(err)) <= 1e-8 * std::max(1.0, std::fabs(st.Fn)));
+    const auto shot = seta_test::shoot(s, st.Fn, c.Ft);
+    CHECK(std::fabs(static_cast<double>(shot.theta_joint) - st.theta_joint) <= 1e-8);
+    CHECK(shot.sign_changes_beam == st.turning_points_beam);
+    CHECK(shot.sign_changes_spatula == st.turning_points_spatula);
+  }
+}
