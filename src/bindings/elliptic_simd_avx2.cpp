@@ -13,7 +13,7 @@ struct hw {
   using vd = __m256d;
   typedef long long vi __attribute__((vector_size(32)));
   static constexpr int W = 4;
-  static vd sqrt(vd x) { return _mm256_sqrt_pd(x); }
+  static vd sqrt(vd x, int) { return _mm256_sqrt_pd(x); }
   static bool any(vi m) { return _mm256_movemask_pd((__m256d)m) != 0; }
 };
 // one register per chain: two interleaved spill (16 ymm registers) and were no faster (measured) (elliptic_simd_pack.hpp)

@@ -6,6 +6,8 @@
 #if defined(GECKO_SIMD_X86)
 #include <immintrin.h>
 
+#include "simd_sqrt_avx512.hpp"
+
 namespace gecko {
 namespace bindings {
 namespace simd_avx512 {
@@ -13,8 +15,12 @@ struct hw {
   using vd = __m512d;
   typedef long long vi __attribute__((vector_size(64)));
   static constexpr int W = 8;
-  // maskz form: GCC 12 warns about the undefined pass-through operand of _mm512_sqrt_pd
-  static vd sqrt(vd x) { return _mm512_maskz_sqrt_pd(0xff, x); }
+  // Chain 0 on the square-root unit, chain 1 on the FMA unit (simd_sqrt_avx512.hpp), so that both
+  // work at once: F and R_F about 1.2x faster on one thread than both chains on the square-root
+  // unit (measured,
+  // bench/tradeoff/simd_batch.py), same bits. maskz form: GCC 12 warns about the undefined
+  // pass-through operand of _mm512_sqrt_pd.
+  static vd sqrt(vd x, int chain) { return chain == 0 ? _mm512_maskz_sqrt_pd(0xff, x) : sqrt_fma_avx512(x); }
   static bool any(vi m) { return _mm512_test_epi64_mask((__m512i)m, (__m512i)m) != 0; }
 };
 // two interleaved chains (32 zmm registers hold both): F and R_F about 1.2x faster than one (measured, E unchanged) (elliptic_simd_pack.hpp)

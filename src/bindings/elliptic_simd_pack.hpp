@@ -14,7 +14,7 @@
 // members are scalarised into registers.
 //
 // Hw gives: vd, vi (one hardware vector of doubles / of 64-bit masks), W (its lanes),
-// sqrt(vd) and any(vi) (some mask lane set).
+// sqrt(vd, chain) (correctly rounded, as std::sqrt) and any(vi) (some mask lane set).
 #pragma once
 
 namespace gecko {
@@ -96,8 +96,9 @@ struct wide_pack {
   };
 #undef GECKO_WIDE_OP
 
+  // Hw::sqrt(x, k): chain k's root (an ISA may compute some chains' roots on other units)
   static vd sqrt(vd x) {
-    for (int k = 0; k < U; ++k) x.h[k] = Hw::sqrt(x.h[k]);
+    for (int k = 0; k < U; ++k) x.h[k] = Hw::sqrt(x.h[k], k);
     return x;
   }
   static bool any(vi m) {

@@ -13,7 +13,7 @@ struct hw {
   using vd = __m128d;
   typedef long long vi __attribute__((vector_size(16)));
   static constexpr int W = 2;
-  static vd sqrt(vd x) { return _mm_sqrt_pd(x); }
+  static vd sqrt(vd x, int) { return _mm_sqrt_pd(x); }
   static bool any(vi m) { return _mm_movemask_pd((__m128d)m) != 0; }
 };
 // one register per chain: two (measured) sped F up but slowed R_F (elliptic_simd_pack.hpp)
