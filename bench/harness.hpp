@@ -27,6 +27,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
+#include <exception>
 #include <ctime>
 #include <limits>
 #include <string>
@@ -217,6 +218,17 @@ inline void write(const std::vector<row>& rows, const std::string& csv, const st
                    r.setting.c_str(), t, e, r.note.c_str());
     }
     std::fclose(f);
+  }
+}
+
+// main() of a benchmark: run(argc, argv), with an exception (missing data, unwritable output, a
+// kernel that threw) printed as "<name>: <what>" and exit status 1.
+inline int guarded_main(const char* name, int (*run)(int, char**), int argc, char** argv) {
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: %s\n", name, e.what());
+    return 1;
   }
 }
 

@@ -455,11 +455,4 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  try {
-    return run(argc, argv);
-  } catch (const std::exception& e) {  // missing data, unwritable output, a kernel that threw
-    std::cerr << "bench_elliptic: " << e.what() << "\n";
-    return 1;
-  }
-}
+int main(int argc, char** argv) { return gecko_bench::guarded_main("bench_elliptic", run, argc, argv); }

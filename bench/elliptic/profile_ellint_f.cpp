@@ -289,11 +289,4 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  try {
-    return run(argc, argv);
-  } catch (const std::exception& e) {
-    std::cerr << "profile_ellint_f: " << e.what() << "\n";
-    return 1;
-  }
-}
+int main(int argc, char** argv) { return gecko_bench::guarded_main("profile_ellint_f", run, argc, argv); }

@@ -768,11 +768,4 @@ int run(int argc, char** argv) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  try {
-    return run(argc, argv);
-  } catch (const std::exception& e) {
-    std::cerr << "bench_tradeoff: " << e.what() << "\n";
-    return 1;
-  }
-}
+int main(int argc, char** argv) { return gecko_bench::guarded_main("bench_tradeoff", run, argc, argv); }
