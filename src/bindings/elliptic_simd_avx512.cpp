@@ -17,9 +17,8 @@ struct hw {
   static constexpr int W = 8;
   // Chain 0 on the square-root unit, chain 1 on the FMA unit (simd_sqrt_avx512.hpp), so that both
   // work at once: F and R_F about 1.2x faster on one thread than both chains on the square-root
-  // unit (measured,
-  // bench/tradeoff/simd_batch.py), same bits. maskz form: GCC 12 warns about the undefined
-  // pass-through operand of _mm512_sqrt_pd.
+  // unit (measured, bench/tradeoff/simd_batch.py), same bits. maskz form: GCC 12 warns about the
+  // undefined pass-through operand of _mm512_sqrt_pd.
   static vd sqrt(vd x, int chain) { return chain == 0 ? _mm512_maskz_sqrt_pd(0xff, x) : sqrt_fma_avx512(x); }
   static bool any(vi m) { return _mm512_test_epi64_mask((__m512i)m, (__m512i)m) != 0; }
 };
