@@ -266,17 +266,25 @@ struct kernel_e {
   static constexpr double pad[2] = {0.5, 0.5};
   static vd eval(const vd* a, vi& ok) {
     const legendre_lanes l(a, ok);
-    const vd s = l.s, c = l.c, m = l.m;
+    const vd s = l.s, c = l.c;
     const vd c2 = c * c;
     const vd s2 = s * s;
+    // Delta^2 >= 2^500 (m -> -inf) goes to the scalar kernel, whose R_D sum term divides in two
+    // steps there (carlson_rd_sum_term); below it every argument is < 2^503 and every factor of
+    // that term < 2^511, where both kernels take the one-rounding form. Such lanes continue with
+    // m = 1/2, as do the e_pos products of lanes with m <= 0 (m (1 - m) would overflow for
+    // m < -1e154 and raise the flag, though the lane takes e_neg).
+    ok &= c2 + (1.0 - l.m) * s2 < 0x1p500;
+    const vd m = select(ok, l.m, splat(0.5));
     const vd k2 = 1.0 - m;
     const vd d2 = c2 + k2 * s2;
     const vi neg = m <= 0.0;
+    const vd mp = select(neg, splat(0.5), m), kp = 1.0 - mp;
     // m <= 0: R(c^2, Delta^2, 1); 0 < m <= 1: R(c^2, 1, Delta^2) (the scalar kernel's orders)
     vd rf, rd;
     rf_rd(c2, select(neg, d2, splat(1.0)), select(neg, splat(1.0), d2), rf, rd);
     const vd e_neg = s * (rf - (m / 3.0) * s2 * rd);
-    const vd e_pos = s * (k2 * rf + (m * k2 / 3.0) * s2 * rd + m * c / pack::sqrt(d2));
+    const vd e_pos = s * (kp * rf + (mp * kp / 3.0) * s2 * rd + mp * c / pack::sqrt(d2));
     return vcopysign(select(neg, e_neg, e_pos), l.phi);
   }
 };

@@ -359,6 +359,10 @@ def complete():
         cases.append(("negative_m", -loguniform(12, 300)))
     for _ in range(50):
         cases.append(("tiny_m", rng.choice((-1.0, 1.0)) * loguniform(-300, -3)))
+    # m -> -inf up to -DBL_MAX (appended last, so the rows above keep their random draws)
+    for _ in range(10):
+        cases.append(("negative_m", -loguniform(300, 308.25)))
+    cases.append(("negative_m", -1.7976931348623157e308))
     rows = []
     with mp.workdps(DPS):
         for region, m in cases:

@@ -51,7 +51,26 @@ inline T carlson_rd_series(T X, T Y, T A, T f) {
 
   const T P2 = P * P;
   const T tail = (q0 + P * q1) + P2 * (q2 + P * q3) + (P2 * P2) * (q4 + P * q5);
+  // A^(3/2) passes the largest double for A > 2^682 (unscaled arguments, m -> -inf in E), where
+  // this part is negligible: divided in two steps there, not to raise a spurious overflow
+  // (see carlson_rd_sum_term below); one rounding for A < 2^511.
+  if (!(A < 1 / sqrt(std::numeric_limits<T>::min()))) return (f * (1 + tail) / A) / sqrt(A);
   return f * (1 + tail) / (A * sqrt(A));
+}
+
+// The duplication's sum term f / (sqrt(z_n) (z_n + lambda_n)) of R_D (DLMF 19.26.20; also in
+// carlson_rf_rd.hpp). Callers on unscaled arguments (E(m) and E(phi|m) for m -> -inf, whose
+// Delta^2 = 1 - m s^2 reaches 1e308) form a product sqrt(z)(z + lambda) beyond the largest double
+// while the term itself is far below the sum's last bit: the product overflowed to inf, the term
+// came out 0 as it should, but the overflow flag was raised (numpy then warned on valid input).
+// Where either factor is at least 1/sqrt(min) (2^511 for double) the term is divided in two steps
+// instead; below that, where every tested and common argument lies, it keeps its one rounding.
+template <class T>
+inline T carlson_rd_sum_term(T f, T sz, T z_plus_lambda) {
+  using std::sqrt;
+  const T big = 1 / sqrt(std::numeric_limits<T>::min());  // the product of two smaller factors is finite
+  if (sz < big && z_plus_lambda < big) return f / (sz * z_plus_lambda);
+  return (f / sz) / z_plus_lambda;
 }
 
 // Unchecked kernel: x, y >= 0 (at most one zero), z > 0, all finite and moderately scaled.
@@ -71,7 +90,7 @@ inline T carlson_rd_imp(T x, T y, T z) {
     const T sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
     const T lambda = sx * (sy + sz) + sy * sz;
     // The division is off the critical path of the loop (nothing in the next step needs it).
-    sum += f / (sz * (z + lambda));
+    sum += carlson_rd_sum_term(f, sz, z + lambda);
     x = (x + lambda) * T(0.25);
     y = (y + lambda) * T(0.25);
     z = (z + lambda) * T(0.25);

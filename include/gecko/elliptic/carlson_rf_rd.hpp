@@ -40,7 +40,7 @@ inline carlson_rf_rd_result<T> carlson_rf_rd_imp(T x, T y, T z) {
   for (int step = 0; step < carlson_max_steps<T> && (f * DD >= tol_d * AD || f * DF >= tol_f * AF); ++step) {
     const T sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
     const T lambda = sx * (sy + sz) + sy * sz;
-    sum += f / (sz * (z + lambda));
+    sum += carlson_rd_sum_term(f, sz, z + lambda);  // (carlson_rd.hpp: no spurious overflow)
     x = (x + lambda) * T(0.25);
     y = (y + lambda) * T(0.25);
     z = (z + lambda) * T(0.25);
