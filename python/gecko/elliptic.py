@@ -55,7 +55,9 @@ def set_simd_level(level: str) -> str:
 
     At import the best level the CPU offers is chosen, or the one named by the environment
     variable ``GECKO_SIMD`` (``scalar``, ``sse``, ``avx2``, ``avx512``). Every level gives the
-    same accuracy; results do not depend on the thread count at any level.
+    same results, bit for bit: the vector loops repeat the scalar kernels' operations without
+    contraction, and their square roots (on AVX-512 half of them computed on the FMA unit) are
+    correctly rounded. Results do not depend on the thread count either.
 
     Parameters
     ----------
