@@ -342,12 +342,12 @@ inline T carlson_rj(T x, T y, T z, T p, const Policy& pol) {
   constexpr T spread_limit = detail::carlson_rj_spread_limit<T>();
   // Both tests below first check that their product is finite: it overflowed for arguments
   // near 1e300 and raised the flag on valid input (where it would overflow, the test is false).
-  constexpr T max = std::numeric_limits<T>::max();
-  if (lo < max / spread_limit && hi > lo * spread_limit)
+  constexpr T largest = std::numeric_limits<T>::max();
+  if (lo < largest / spread_limit && hi > lo * spread_limit)
     return detail::carlson_rj_spread_step<T, Policy>(x, y, z, p, pol);
   // p far above x, y, z: the kernel's large-p route works in units of max(x, y, z) and keeps p's
   // scale apart; a common rescaling would overflow p or flush x, y, z.
-  if (hi < max / 16 && p > 16 * hi) return detail::carlson_rj_imp<T, Policy>(x, y, z, p);
+  if (hi < largest / 16 && p > 16 * hi) return detail::carlson_rj_imp<T, Policy>(x, y, z, p);
   // products of three square roots inside the kernel: keep the largest argument within
   // 2^(+-max_exponent/8).
   constexpr int window = std::numeric_limits<T>::max_exponent / 8;
