@@ -172,6 +172,20 @@ inline bool arclength_corrector(const System& sys, Eigen::Matrix<typename System
   return false;
 }
 
+// The plan at a state z that solves the equations at mu (converged, but under a plan found no
+// longer valid there): the segments' lengths there are l1 and l2, which fix the libration period
+// counts (System::plan_solved). The phases alone (System::plan) are defined modulo 4K and drop a
+// period where the ends' phases coincide (paper 001 eq (15) with l = 4K): a corrector re-planned
+// so would start from a residual off by 4K and give up (status 6). plan_solved only adds periods
+// to plan's choice, so its state is plan's; plan remains the fallback should it ever not be ok.
+template <class System>
+inline typename System::plan_type plan_at_solution(const System& sys, const typename System::vec& z,
+                                                   typename System::value_type mu) {
+  auto p = sys.plan_solved(z, mu);
+  if (System::plan_state(p) == segment_state::ok) return p;
+  return sys.plan(z, mu);
+}
+
 // Follow the line from the solved state (z0, Ft0) in the direction dir (+1: increasing Ft).
 template <class System>
 inline traced_line<System> follow_line(const System& sys, const typename System::vec& z0,
@@ -251,7 +265,7 @@ inline traced_line<System> follow_line(const System& sys, const typename System:
           if (sys.plan_valid(p, z, u, u14) || (round > 0 && sys.step_norm(z - z_prev, z) <= tried)) ok = true;
           else {
             z_prev = z;
-            p = sys.plan(z, u);
+            p = plan_at_solution(sys, z, u);
           }
         }
       }
@@ -279,8 +293,9 @@ inline traced_line<System> follow_line(const System& sys, const typename System:
     bool ok = arclength_corrector(sys, x, tl, plan, opt.tolerance, opt.scale, its, u14, omega);
     auto p = plan;
     if (ok && !sys.plan_valid(p, x.template head<n>(), x[n], u14)) {
-      // The state moved out of the plan: re-plan there and correct again.
-      p = sys.plan(x.template head<n>(), x[n]);
+      // The state moved out of the plan: re-plan there and correct again. x solves the
+      // equations (under the old plan), so its lengths give the period counts (plan_at_solution).
+      p = plan_at_solution(sys, x.template head<n>(), x[n]);
       const segment_state st = System::plan_state(p);
       if (st == segment_state::unsupported) {
         line.end = line_end::unsupported_state;
