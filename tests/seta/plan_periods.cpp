@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "gecko/seta/critical_line.hpp"
@@ -23,6 +24,24 @@ namespace {
 struct period_case {
   double EI1, EI2, EA1, EA2, l2, alpha1, alpha2, Ft;
 };
+
+// The state at c.Ft on the critical line, with the expected status (converged, or inadmissible:
+// it solves paper 001 eq (15) as well), checked against the RK4 shooting of the ODE.
+void check_state(const period_case& c, gecko::critical_status expected) {
+  gecko::TwoLevelSeta<double> s;
+  s.EI1 = c.EI1; s.EI2 = c.EI2; s.EA1 = c.EA1; s.EA2 = c.EA2;
+  s.l1 = 1.0; s.l2 = c.l2; s.alpha1 = c.alpha1; s.alpha2 = c.alpha2; s.w = 1.0;
+  const auto st = gecko::critical_line_at(s, std::vector<double>{c.Ft})[0];
+  INFO("EI1 " << s.EI1 << " Ft " << c.Ft << " status " << static_cast<int>(st.status) << " Fn " << st.Fn);
+  REQUIRE(st.status == expected);
+  // Independent check: the RK4 shooting's base-angle mismatch, as an error in Fn.
+  const long double err = seta_test::fn_error(s, st.Fn, c.Ft);
+  CHECK(std::fabs(static_cast<double>(err)) <= 1e-8 * std::max(1.0, std::fabs(st.Fn)));
+  const auto shot = seta_test::shoot(s, st.Fn, c.Ft);
+  CHECK(std::fabs(static_cast<double>(shot.theta_joint) - st.theta_joint) <= 1e-8);
+  CHECK(shot.sign_changes_beam == st.turning_points_beam);
+  CHECK(shot.sign_changes_spatula == st.turning_points_spatula);
+}
 
 }  // namespace
 
@@ -35,19 +54,21 @@ TEST_CASE("a line whose segment is one libration long keeps its period count", "
       {4.016807922700496, 0.3797143314374259, 11771325.138693243, 4978.413142805896, 0.5852586607649094,
        1.0796046787514415, 0.22435793941112436, -54.87132672250153},
   };
-  for (const auto& c : cases) {
-    gecko::TwoLevelSeta<double> s;
-    s.EI1 = c.EI1; s.EI2 = c.EI2; s.EA1 = c.EA1; s.EA2 = c.EA2;
-    s.l1 = 1.0; s.l2 = c.l2; s.alpha1 = c.alpha1; s.alpha2 = c.alpha2; s.w = 1.0;
-    const auto st = gecko::critical_line_at(s, std::vector<double>{c.Ft})[0];
-    INFO("EI1 " << s.EI1 << " Ft " << c.Ft << " status " << static_cast<int>(st.status) << " Fn " << st.Fn);
-    REQUIRE(st.status == gecko::critical_status::converged);
-    // Independent check: the RK4 shooting's base-angle mismatch, as an error in Fn.
-    const long double err = seta_test::fn_error(s, st.Fn, c.Ft);
-    CHECK(std::fabs(static_cast<double>(err)) <= 1e-8 * std::max(1.0, std::fabs(st.Fn)));
-    const auto shot = seta_test::shoot(s, st.Fn, c.Ft);
-    CHECK(std::fabs(static_cast<double>(shot.theta_joint) - st.theta_joint) <= 1e-8);
-    CHECK(shot.sign_changes_beam == st.turning_points_beam);
-    CHECK(shot.sign_changes_spatula == st.turning_points_spatula);
-  }
+  for (const auto& c : cases) check_state(c, gecko::critical_status::converged);
+}
+
+// Campaign designs 971 and 394 (validation/data/stress_10000_states.npz), each at its negative Ft.
+// Where the corrector converged to a state its plan no longer applied to, follow_line re-planned
+// there from the phases alone (in a step, and in the landing on the end of the range), which can
+// drop the period of a segment about one libration long, as the refresh between steps did above;
+// these lines ended as no_convergence before reaching Ft (status 6). The re-plan now takes the
+// period counts from the lengths at the converged state (detail::plan_at_solution).
+// Design 394 solves eq (15) but its seta crosses the substrate (inadmissible, status 7).
+TEST_CASE("a re-plan at a converged state keeps the libration period count", "[seta][line][stress]") {
+  check_state({41.075667553956144, 0.0932552034397584, 174.60163716341123, 5615.080522039161,
+               0.35704620912901713, 1.2599461916860546, 0.25820678549186615, -63.314157628291134},
+              gecko::critical_status::converged);
+  check_state({79.22094127969113, 0.2962867518683177, 928.9707463831139, std::numeric_limits<double>::infinity(),
+               0.9644286252595868, 1.5464121652466718, 0.010191580584372783, -24.795400365954627},
+              gecko::critical_status::inadmissible);
 }

@@ -18,6 +18,7 @@
 #include "gecko/seta/admissibility.hpp"
 #include "gecko/seta/critical_residual.hpp"
 #include "gecko/seta/detail/newton.hpp"
+#include "gecko/seta/detail/plan_at_solution.hpp"
 #include "gecko/seta/detail/seta_system.hpp"
 #include "gecko/seta/extensibility.hpp"
 #include "gecko/seta/two_level_seta.hpp"
@@ -116,7 +117,7 @@ inline critical_status solve_with_plans(const System& sys, typename System::vec&
     if (code == newton_code::singular) return critical_status::singular;
     if (code != newton_code::converged) return critical_status::not_converged;
     if (sys.plan_valid(plan, z, Ft, u14)) return critical_status::converged;
-    plan = sys.plan(z, Ft);
+    plan = detail::plan_at_solution(sys, z, Ft);
   }
   return critical_status::not_converged;
 }

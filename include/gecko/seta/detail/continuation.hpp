@@ -18,6 +18,7 @@
 #include <Eigen/Dense>
 
 #include "gecko/seta/detail/newton.hpp"
+#include "gecko/seta/detail/plan_at_solution.hpp"
 #include "gecko/seta/elastica_segment.hpp"
 
 namespace gecko {
@@ -251,7 +252,7 @@ inline traced_line<System> follow_line(const System& sys, const typename System:
           if (sys.plan_valid(p, z, u, u14) || (round > 0 && sys.step_norm(z - z_prev, z) <= tried)) ok = true;
           else {
             z_prev = z;
-            p = sys.plan(z, u);
+            p = plan_at_solution(sys, z, u);
           }
         }
       }
@@ -279,8 +280,9 @@ inline traced_line<System> follow_line(const System& sys, const typename System:
     bool ok = arclength_corrector(sys, x, tl, plan, opt.tolerance, opt.scale, its, u14, omega);
     auto p = plan;
     if (ok && !sys.plan_valid(p, x.template head<n>(), x[n], u14)) {
-      // The state moved out of the plan: re-plan there and correct again.
-      p = sys.plan(x.template head<n>(), x[n]);
+      // The state moved out of the plan: re-plan there and correct again. x solves the
+      // equations (under the old plan), so its lengths give the period counts (plan_at_solution).
+      p = plan_at_solution(sys, x.template head<n>(), x[n]);
       const segment_state st = System::plan_state(p);
       if (st == segment_state::unsupported) {
         line.end = line_end::unsupported_state;
