@@ -16,8 +16,10 @@ struct hw {
   typedef long long vi __attribute__((vector_size(64)));
   static constexpr int W = 8;
   // Chain 0 on the square-root unit, chain 1 on the FMA unit (simd_sqrt_avx512.hpp), so that both
-  // work at once: F and R_F about 1.2x faster on one thread than both chains on the square-root
-  // unit (measured, bench/tradeoff/simd_batch.py), same bits. maskz form: GCC 12 warns about the
+  // work at once; same bits. Against both chains on the square-root unit (bench/tradeoff/
+  // simd_batch.py, medians of three interleaved runs each, 2-core AVX-512 Xeon): one thread F 1.25x,
+  // R_F 1.14x, E 1.16x faster; two threads F 1.08x, R_F 1.19x, E 0.94x (E slower: measured, not
+  // understood; the FMA unit may cost clock on both cores). maskz form: GCC 12 warns about the
   // undefined pass-through operand of _mm512_sqrt_pd.
   static vd sqrt(vd x, int chain) { return chain == 0 ? _mm512_maskz_sqrt_pd(0xff, x) : sqrt_fma_avx512(x); }
   static bool any(vi m) { return _mm512_test_epi64_mask((__m512i)m, (__m512i)m) != 0; }
