@@ -272,12 +272,12 @@ struct kernel_e {
     // Delta^2 >= 2^500 (m -> -inf) goes to the scalar kernel, whose R_D sum term divides in two
     // steps there (carlson_rd_sum_term); below it every argument is < 2^503 and every factor of
     // that term < 2^511, where both kernels take the one-rounding form. Such lanes continue with
-    // m = 1/2, as do the e_pos products of lanes with m <= 0 (m (1 - m) would overflow for
-    // m < -1e154 and raise the flag, though the lane takes e_neg).
-    ok &= c2 + (1.0 - l.m) * s2 < 0x1p500;
+    // m = 1/2 and Delta^2 = 1; the e_pos products of lanes with m <= 0 use m = 1/2 as well
+    // (m (1 - m) would overflow for m < -1e154 and raise the flag, though the lane takes e_neg).
+    const vd d2_in = c2 + (1.0 - l.m) * s2;
+    ok &= d2_in < 0x1p500;
     const vd m = select(ok, l.m, splat(0.5));
-    const vd k2 = 1.0 - m;
-    const vd d2 = c2 + k2 * s2;
+    const vd d2 = select(ok, d2_in, splat(1.0));
     const vi neg = m <= 0.0;
     const vd mp = select(neg, splat(0.5), m), kp = 1.0 - mp;
     // m <= 0: R(c^2, Delta^2, 1); 0 < m <= 1: R(c^2, 1, Delta^2) (the scalar kernel's orders)
