@@ -11,6 +11,12 @@ and the new one):
     PYTHONPATH=<new gecko> python3 -m validation.recheck --save new.npz
     python3 -m validation.changed old.npz new.npz [--json out.json]
 
+The old side may also be the committed record of the 10,000-design campaign
+(validation/data/stress_10000_states.npz, statuses and digests, no Fn): then the newly solved states
+(status 0 or 7 now, not 0 in the campaign) are verified, and "moved" is left to recheck, whose
+``campaign_solved_bitwise_equal`` says whether every state the campaign solved and verified still
+has its campaign's Fn and beta bit for bit.
+
 "Silently wrong" uses the campaign's threshold and conclusiveness rule (campaign.classify).
 """
 from __future__ import annotations
@@ -32,6 +38,8 @@ def changed_states(old: dict, new: dict) -> dict:
     solved = lambda s: (s == 0) | (s == campaign.INADMISSIBLE)  # noqa: E731
     newly = solved(new["status"]) & ~solved(old["status"])
     both = solved(new["status"]) & solved(old["status"])
+    if "Fn" not in old:   # the campaign's record: its values are compared bitwise by recheck
+        return dict(newly_solved=newly, moved=np.zeros_like(newly))
     with np.errstate(invalid="ignore"):
         moved_fn = np.abs(new["Fn"] - old["Fn"]) > MOVED * np.maximum(1.0, np.abs(old["Fn"]))
         moved_beta = np.abs(new["beta"] - old["beta"]) > MOVED
@@ -53,7 +61,7 @@ def run(old_path: str, new_path: str) -> dict:
     wrong = cl["wrong_fn"] | cl["wrong_beta"]
     rows, cols = np.nonzero(wrong)
     return dict(states=int(new["status"].size), transitions=transitions(old["status"], new["status"]),
-                newly_solved=int(masks["newly_solved"].sum()), moved=int(masks["moved"].sum()),
+                newly_solved=int(masks["newly_solved"].sum()), moved=int(masks["moved"].sum()) if "Fn" in old else None,
                 verified_conclusive=int(conclusive.sum()),
                 inconclusive=int((check & cl["inconclusive_fn"]).sum()),
                 silently_wrong=int(wrong.sum()),

@@ -44,32 +44,47 @@ def _rhs(theta, p, Fn, Ft, inv_ei, inv_ea):
     return p, -(Fn * s + Ft * c) * (1.0 + T * inv_ea) * inv_ei
 
 
+def _dop853_step(theta, p, h, Fn, Ft, inv_ei, inv_ea, heights=False):
+    """One fixed DOP853 step of size h from (theta, p); with heights also the step's increment of the
+    height z (dz/ds = _dz(theta), below) and dz/ds at the start. Returns (theta, p, dz, dz/ds)."""
+    kt = [None] * _NS
+    kp = [None] * _NS
+    kz = [None] * _NS
+    kt[0], kp[0] = _rhs(theta, p, Fn, Ft, inv_ei, inv_ea)
+    if heights:
+        kz[0] = _dz(theta, Fn, Ft, inv_ea)
+    for i in range(1, _NS):
+        dt = np.zeros_like(theta)
+        dp = np.zeros_like(p)
+        for j in range(i):
+            a = _A[i, j]
+            if a != 0.0:
+                dt += a * kt[j]
+                dp += a * kp[j]
+        th_i = theta + h * dt
+        kt[i], kp[i] = _rhs(th_i, p + h * dp, Fn, Ft, inv_ei, inv_ea)
+        if heights:
+            kz[i] = _dz(th_i, Fn, Ft, inv_ea)
+    dt = np.zeros_like(theta)
+    dp = np.zeros_like(p)
+    dz = np.zeros_like(theta)
+    for j in range(_NS):
+        if _B[j] != 0.0:
+            dt += _B[j] * kt[j]
+            dp += _B[j] * kp[j]
+            if heights:
+                dz += _B[j] * kz[j]
+    return theta + h * dt, p + h * dp, (h * dz if heights else None), kz[0]
+
+
 def _rk8_uniform(theta, p, h, n, Fn, Ft, inv_ei, inv_ea, count_turns=False):
     """n fixed DOP853 steps of size h (arrays) from (theta, p); returns (theta, p, sign changes of p)."""
     turns = np.zeros(theta.shape, dtype=np.int64)
     for _ in range(n):
-        kt = [None] * _NS
-        kp = [None] * _NS
-        kt[0], kp[0] = _rhs(theta, p, Fn, Ft, inv_ei, inv_ea)
-        for i in range(1, _NS):
-            dt = np.zeros_like(theta)
-            dp = np.zeros_like(p)
-            for j in range(i):
-                a = _A[i, j]
-                if a != 0.0:
-                    dt += a * kt[j]
-                    dp += a * kp[j]
-            kt[i], kp[i] = _rhs(theta + h * dt, p + h * dp, Fn, Ft, inv_ei, inv_ea)
-        dt = np.zeros_like(theta)
-        dp = np.zeros_like(p)
-        for j in range(_NS):
-            if _B[j] != 0.0:
-                dt += _B[j] * kt[j]
-                dp += _B[j] * kp[j]
-        p_new = p + h * dp
+        theta_new, p_new, _, _ = _dop853_step(theta, p, h, Fn, Ft, inv_ei, inv_ea)
         if count_turns:
             turns += (np.sign(p_new) * np.sign(p) < 0)
-        theta = theta + h * dt
+        theta = theta_new
         p = p_new
     return theta, p, turns
 
@@ -248,3 +263,103 @@ def verify(d, Ft, Fn, beta, newton_iterations=5):
     return dict(R=R, S=S, dFn=dFn, fn_root=fn_root, dbeta=beta - beta_root, theta_err=er,
                 fn_uncert=fn_uncert, beta_uncert=beta_uncert, steps=nu, turns_beam=tb, turns_spatula=ts, refined=refined,
                 root_found=root_found)
+
+
+# ---- heights: is the seta above the substrate? (issue 13, item 2: an independent check) ----------
+# With theta measured from the substrate normal (theta = pi/2: parallel to it), x along the
+# substrate towards the contact and z the height above it, the centreline of the stretched seta has
+#     dz/ds = -(1 + T(theta)/EA) cos(theta)
+# (the unit tangent (sin theta, -cos theta) times the stretch 1 + T/EA of the convected coordinate),
+# and z = 0 at the contact edge s = a. The backward shot carries z along with theta and theta'; the
+# lowest z is taken over every step and, between two steps, at the minimum of the cubic Hermite
+# interpolant of (z, dz/ds) at both ends (exact to O(h^4), so no sampling error of order h^2).
+
+HEIGHT_NOISE_REL = NOISE_REL   # rounding-level perturbation of the tip data (see verify())
+
+
+def _dz(theta, Fn, Ft, inv_ea):
+    return -(1.0 + (Ft * np.sin(theta) - Fn * np.cos(theta)) * inv_ea) * np.cos(theta)
+
+
+def _hermite_min(z0, m0, z1, m1):
+    """Smallest value of the cubic Hermite interpolant on t in [0, 1] (m = h dz/ds at the ends)."""
+    a = 6.0 * z0 + 3.0 * m0 - 6.0 * z1 + 3.0 * m1
+    b = -6.0 * z0 - 4.0 * m0 + 6.0 * z1 - 2.0 * m1
+    c = m0
+    lo = np.minimum(z0, z1)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        disc = np.sqrt(np.maximum(b * b - 4.0 * a * c, 0.0))
+        q = -0.5 * (b + np.copysign(disc, b))
+        cands = (q / a, np.where(q != 0.0, c / q, np.nan), np.where(a == 0.0, -c / b, np.nan))
+    for t in cands:
+        inside = np.isfinite(t) & (t > 0.0) & (t < 1.0)
+        tt = np.where(inside, t, 0.0)
+        t2, t3 = tt * tt, tt * tt * tt
+        zt = (2 * t3 - 3 * t2 + 1) * z0 + (t3 - 2 * t2 + tt) * m0 + (-2 * t3 + 3 * t2) * z1 + (t3 - t2) * m1
+        lo = np.where(inside, np.minimum(lo, zt), lo)
+    return lo
+
+
+def _rk8_heights(theta, p, z, zmin, h, n, Fn, Ft, inv_ei, inv_ea):
+    """n fixed DOP853 steps (common n) carrying z; returns theta, p, z and the running minimum of z."""
+    for _ in range(n):
+        theta_new, p_new, dz, dz0 = _dop853_step(theta, p, h, Fn, Ft, inv_ei, inv_ea, heights=True)
+        z_new = z + dz
+        zmin = np.minimum(zmin, _hermite_min(z, h * dz0, z_new, h * _dz(theta_new, Fn, Ft, inv_ea)))
+        theta, p, z = theta_new, p_new, z_new
+    return theta, p, z, zmin
+
+
+def _heights_fixed(d, Ft, Fn, n, tip_rel=0.0):
+    """Backward shot with n steps per segment (common n) carrying z: the lowest z over [0, a]."""
+    iea1, iea2 = _inv(d["EA1"]), _inv(d["EA2"])
+    rad = 2.0 * (d["w"] - Ft * Ft * iea2 * 0.5) / d["EI2"]
+    theta = np.full(Ft.shape, math.pi / 2)
+    p = np.sqrt(np.maximum(rad, 0.0)) * (1.0 + tip_rel)
+    z = np.zeros(Ft.shape)
+    zmin = np.zeros(Ft.shape)   # the contact edge itself
+    theta, p, z, zmin = _rk8_heights(theta, p, z, zmin, -d["l2"] / n, n, Fn, Ft, 1.0 / d["EI2"], iea2)
+    theta1 = theta - d["alpha2"]
+    p1 = d["EI2"] * p / d["EI1"]
+    _, _, _, zmin = _rk8_heights(theta1, p1, z, zmin, -d["l1"] / n, n, Fn, Ft, 1.0 / d["EI1"], iea1)
+    return zmin
+
+
+def _heights_grouped(d, Ft, Fn, n, tip_rel):
+    """_heights_fixed with a step count per state (powers of two), one pass per distinct count."""
+    out = np.full(Ft.shape, np.nan)
+    for k in np.unique(n):
+        idx = np.nonzero(n == k)[0]
+        sub = {key: v[idx] for key, v in d.items()}
+        out[idx] = _heights_fixed(sub, Ft[idx], Fn[idx], int(k), tip_rel[idx])
+    return out
+
+
+def heights(d, Ft, Fn):
+    """The lowest height of the seta over [0, a] (0: the contact edge) for each state, by the shot.
+
+    d: dict of 1-D design arrays (one row per state), Ft, Fn: arrays (Fn: the solver's).
+    Returns (min_z, uncertainty): min_z from 2n steps per segment (n four times the a-priori count
+    of ``step_estimate``, at least 64); the uncertainty adds the interpolation/integration error
+    (|min_z(2n) - min_z(n)|, the O(h^4) Hermite term's 1/15 of it rounded up to the whole
+    difference), the amplification of rounding of the tip data (as in verify(): a 1e-10 tip
+    perturbation scaled to HEIGHT_NOISE_REL) and the effect of an error of 1e-11 max(1, |Fn|) in Fn
+    (a 1e-7 perturbation scaled down), the solver's state tolerance. The four shots of every state
+    run in one pass per distinct step count."""
+    Ft = np.asarray(Ft, float)
+    Fn = np.asarray(Fn, float)
+    K = Ft.size
+    est = step_estimate(d, Ft, Fn)
+    n = np.maximum(64, 2.0 ** np.ceil(np.log2(np.maximum(1.0, 6.0 * est)))).astype(np.int64)
+    n = np.minimum(n, 4 * N_MAX)
+    dF = 1e-7 * np.maximum(1.0, np.abs(Fn))
+    # shots: n steps; 2n; 2n with the tip rate perturbed; 2n at Fn + dF
+    dd = {k: np.tile(v, 4) for k, v in d.items()}
+    tip = np.concatenate([np.zeros(3 * K), np.zeros(K)])
+    tip[2 * K:3 * K] = 1e-10
+    zz = _heights_grouped(dd, np.tile(Ft, 4), np.concatenate([Fn, Fn, Fn, Fn + dF]),
+                          np.concatenate([n, 2 * n, 2 * n, 2 * n]), tip)
+    z1, z2, z3, z4 = zz[:K], zz[K:2 * K], zz[2 * K:3 * K], zz[3 * K:]
+    unc = np.abs(z2 - z1) + np.abs(z3 - z2) * (HEIGHT_NOISE_REL / 1e-10) + np.abs(z4 - z2) * 1e-4
+    unc = np.where(np.isfinite(unc), unc, np.inf)
+    return z2, unc

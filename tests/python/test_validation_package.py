@@ -53,3 +53,53 @@ def test_claims_scan_finds_a_known_root_and_confirms_two_campaign_claims():
         assert int(z["status"][i, j]) == 3
         sc = claims.scan_state(z["P"][i], float(z["FT"][i, j]), grid=31, bisections=24)
         assert claims.classify(sc) == "no_root", (i, j, sc["roots"])
+
+
+def test_hermite_minimum_is_exact_for_a_cubic():
+    from validation import verify
+    # z(t) = (t - 0.3)^2 (t + 1) - 0.05 on [0, 1]: minimum at t = 0.3 (z = -0.05), inside the step
+    z = lambda t: (t - 0.3) ** 2 * (t + 1) - 0.05  # noqa: E731
+    dz = lambda t: 2 * (t - 0.3) * (t + 1) + (t - 0.3) ** 2  # noqa: E731
+    lo = verify._hermite_min(np.array([z(0.0)]), np.array([dz(0.0)]), np.array([z(1.0)]), np.array([dz(1.0)]))
+    assert abs(lo[0] + 0.05) < 1e-15
+    # monotone: the smaller end
+    lo = verify._hermite_min(np.array([1.0]), np.array([-0.5]), np.array([0.5]), np.array([-0.5]))
+    assert lo[0] == 0.5
+
+
+def test_admissibility_shot_confirms_min_z_and_flags_injected_errors():
+    # validation/admissibility.py: the lowest height by the independent shot (no gecko code) against
+    # gecko's min_z and status; the reference design with alpha2 = 1 crosses the substrate near (Ft)max
+    pytest.importorskip("scipy")
+    from validation import admissibility, campaign
+    s = gecko.TwoLevelSeta(alpha2=1.0)
+    ft = np.array([[5.0, 9.9, 9.999]])
+    line = s.critical_line(Ft=ft[0])
+    status = line.status[None, :].astype(np.int64)
+    np.testing.assert_array_equal(status[0], [0, 7, 7])
+    P = np.array([[getattr(s, f) for f in campaign.FIELDS]], dtype=float)
+    Fn, min_z = line.Fn[None, :], line.min_z[None, :]
+    r = admissibility.check(P, ft, Fn, status, min_z)
+    assert r["conclusive"].all() and not r["wrong"].any() and not r["differs"].any()
+    assert np.nanmax(r["dev"]) < 1e-12 and r["shot_min_z"][0, 2] < -1e-3
+    # injected: a crossing state called admissible, an admissible one called crossing, a wrong depth
+    bad = status.copy()
+    bad[0, 1] = 0
+    assert admissibility.check(P, ft, Fn, bad, min_z)["wrong_admissible"][0].tolist() == [False, True, False]
+    bad = status.copy()
+    bad[0, 0] = 7
+    mz = min_z.copy()
+    mz[0, 0] = -0.01
+    r = admissibility.check(P, ft, Fn, bad, mz)
+    assert r["wrong_inadmissible"][0].tolist() == [True, False, False]
+    mz = min_z.copy()
+    mz[0, 2] += 1e-7
+    assert admissibility.check(P, ft, Fn, status, mz)["differs"][0].tolist() == [False, False, True]
+    # status 7 with the check not made (min_z NaN): an admissible state and a crossing one
+    bad = np.array([[7, 7, 7]])
+    mz = min_z.copy()
+    mz[0, 0] = mz[0, 1] = np.nan
+    r = admissibility.check(P, ft, Fn, bad, mz)
+    assert r["unchecked"][0].tolist() == [True, True, False]
+    assert r["unchecked_above"][0].tolist() == [True, False, False]
+    assert r["unchecked_crossing"][0].tolist() == [False, True, False]
