@@ -103,7 +103,8 @@ def main(argv=None):
         # The states the campaign solved (and verified), bitwise: the re-run's Fn and beta with every
         # other state set to NaN, as the campaign recorded them (its NaN for "no state"). Equal
         # digests mean that each campaign-verified value is unchanged, so its verdict carries over
-        # and only the newly solved states need the verifier (validation.changed --campaign).
+        # and only the newly solved states need the verifier (validation.changed with the states
+        # file as its old side).
         was = z["status"] == 0
         solved_equal = bool(digest(np.where(was, Fn, np.nan)) == str(z["Fn_sha256"]) and
                             digest(np.where(was, beta, np.nan)) == str(z["beta_sha256"]))

@@ -341,8 +341,8 @@ def heights(d, Ft, Fn):
     d: dict of 1-D design arrays (one row per state), Ft, Fn: arrays (Fn: the solver's).
     Returns (min_z, uncertainty): min_z from 2n steps per segment (n four times the a-priori count
     of ``step_estimate``, at least 64); the uncertainty adds the interpolation/integration error
-    (|min_z(2n) - min_z(n)|, the O(h^4) Hermite term's 1/15 of it rounded up to the whole
-    difference), the amplification of rounding of the tip data (as in verify(): a 1e-10 tip
+    (the whole difference |min_z(2n) - min_z(n)|, though the O(h^4) Hermite term leaves the 2n
+    result only ~1/15 of it), the amplification of rounding of the tip data (as in verify(): a 1e-10 tip
     perturbation scaled to HEIGHT_NOISE_REL) and the effect of an error of 1e-11 max(1, |Fn|) in Fn
     (a 1e-7 perturbation scaled down), the solver's state tolerance. The four shots of every state
     run in one pass per distinct step count."""
@@ -355,7 +355,7 @@ def heights(d, Ft, Fn):
     dF = 1e-7 * np.maximum(1.0, np.abs(Fn))
     # shots: n steps; 2n; 2n with the tip rate perturbed; 2n at Fn + dF
     dd = {k: np.tile(v, 4) for k, v in d.items()}
-    tip = np.concatenate([np.zeros(3 * K), np.zeros(K)])
+    tip = np.zeros(4 * K)
     tip[2 * K:3 * K] = 1e-10
     zz = _heights_grouped(dd, np.tile(Ft, 4), np.concatenate([Fn, Fn, Fn, Fn + dF]),
                           np.concatenate([n, 2 * n, 2 * n, 2 * n]), tip)
