@@ -27,15 +27,6 @@ bool no_overflow(F f) {
 }
 }  // namespace
 
-// The bound of R_D's two-step divisions is 1/sqrt(min), exactly, for each type (carlson_rd.hpp).
-TEST_CASE("elliptic: R_D's product bound is 1/sqrt(min)") {
-  static_assert(gecko::detail::carlson_product_safe_limit<double>() == 0x1p511, "2^511");
-  static_assert(gecko::detail::carlson_product_safe_limit<float>() == 0x1p63f, "2^63");
-  CHECK(gecko::detail::carlson_product_safe_limit<double>() == 1 / std::sqrt(std::numeric_limits<double>::min()));
-  CHECK(gecko::detail::carlson_product_safe_limit<long double>() ==
-        1 / std::sqrt(std::numeric_limits<long double>::min()));
-}
-
 TEST_CASE("elliptic: no spurious overflow flag for m -> -inf and arguments near 1e300") {
   const double big = std::numeric_limits<double>::max();
   for (double m : {-1e160, -1e200, -1e250, -1e300, -1e305, -big}) {

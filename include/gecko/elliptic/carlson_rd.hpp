@@ -24,16 +24,6 @@
 namespace gecko {
 namespace detail {
 
-// 1/sqrt(min) (2^511 for double, 2^63 for float): two factors below it have a finite product
-// (min = 2^(min_exponent - 1), so this is 2^((1 - min_exponent)/2), exact). The bound below which
-// carlson_rd_series and carlson_rd_sum_term keep their one-rounding forms.
-template <class T>
-constexpr T carlson_product_safe_limit() {
-  T v = 1;
-  for (int i = 0; i < (1 - std::numeric_limits<T>::min_exponent) / 2; ++i) v *= 2;
-  return v;
-}
-
 // Series part of R_D: X, Y scaled deviations (Z = -(X + Y)/3), A final mean, f = 4^-n.
 // Returns 4^-n A^(-3/2) (1 + tail), the series of DLMF 19.19.7 for
 // R_D = R_{-3/2}(1/2, 1/2, 3/2; x, y, z):
@@ -64,7 +54,7 @@ inline T carlson_rd_series(T X, T Y, T A, T f) {
   // A^(3/2) passes the largest double for A > 2^682 (unscaled arguments, m -> -inf in E), where
   // this part is negligible: divided in two steps there, not to raise a spurious overflow
   // (see carlson_rd_sum_term below); one rounding for A < 2^511.
-  if (!(A < carlson_product_safe_limit<T>())) return (f * (1 + tail) / A) / sqrt(A);
+  if (!(A < 1 / sqrt(std::numeric_limits<T>::min()))) return (f * (1 + tail) / A) / sqrt(A);
   return f * (1 + tail) / (A * sqrt(A));
 }
 
@@ -77,7 +67,8 @@ inline T carlson_rd_series(T X, T Y, T A, T f) {
 // instead; below that, where every tested and common argument lies, it keeps its one rounding.
 template <class T>
 inline T carlson_rd_sum_term(T f, T sz, T z_plus_lambda) {
-  const T big = carlson_product_safe_limit<T>();
+  using std::sqrt;
+  const T big = 1 / sqrt(std::numeric_limits<T>::min());  // the product of two smaller factors is finite
   if (sz < big && z_plus_lambda < big) return f / (sz * z_plus_lambda);
   return (f / sz) / z_plus_lambda;
 }
