@@ -47,7 +47,7 @@ def check(P, FT, Fn, status, min_z, workers=1) -> dict:
     """Per-state shot heights and verdicts over the solved states (status 0 or 7); the states are
     shared out over ``workers`` processes (each shoots all its states at once, vectorised)."""
     n, m = FT.shape
-    rows, cols = np.nonzero((status == 0) | (status == campaign.INADMISSIBLE))
+    rows, cols = np.nonzero(campaign.solved(status))
     v = np.full((n, m), np.nan)
     unc = np.full((n, m), np.nan)
     parts = [(rows[k::workers], cols[k::workers]) for k in range(workers)]
@@ -62,8 +62,7 @@ def check(P, FT, Fn, status, min_z, workers=1) -> dict:
         unc[r, c] = u
     L = (P[:, campaign.FIELDS.index("l1")] + P[:, campaign.FIELDS.index("l2")])[:, None]
     tol = TOL_REL * L
-    solved = (status == 0) | (status == campaign.INADMISSIBLE)
-    conclusive = solved & (unc < 0.1 * tol)
+    conclusive = campaign.solved(status) & (unc < 0.1 * tol)
     with np.errstate(invalid="ignore"):
         wrong0 = conclusive & (status == 0) & (v < -tol)
         wrong7 = conclusive & (status == campaign.INADMISSIBLE) & (min_z < -tol) & (v > -GECKO_CROSSING_REL * L)
@@ -87,7 +86,7 @@ def run(path: str, workers: int = 2) -> dict:
     t0 = time.time()
     P, FT, status, min_z = z["P"], z["FT"], z["status"], z["min_z"]
     r = check(P, FT, z["Fn"], status, min_z, workers)
-    solved = (status == 0) | (status == campaign.INADMISSIBLE)
+    solved = campaign.solved(status)
     rows, cols = np.nonzero(r["wrong"] | (r["differs"] & ~r["unchecked"]) | r["unchecked_above"])
     per = {}
     for s in (0, campaign.INADMISSIBLE):

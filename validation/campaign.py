@@ -44,6 +44,11 @@ WRONG_REL = 1e-8
 INADMISSIBLE = 7  # the critical status that keeps Fn and beta (gecko.CriticalStatus.inadmissible)
 
 
+def solved(status):
+    """Mask of the solved states: status 0, and 7 (inadmissible), which keeps its values."""
+    return (status == 0) | (status == INADMISSIBLE)
+
+
 def sample_designs(n, rng, p_inf=0.2):
     lu = lambda lo, hi, size: 10.0 ** rng.uniform(math.log10(lo), math.log10(hi), size)  # noqa: E731
     EI1 = lu(0.1, 200.0, n)
@@ -136,7 +141,7 @@ def verify_states(P, FT, Fn, beta, status, chunk=4000):
     """Verify every solved state (status 0, and 7, which keeps its values); returns per-state arrays
     (NaN where not verified)."""
     n, m = FT.shape
-    rows, cols = np.nonzero((status == 0) | (status == INADMISSIBLE))
+    rows, cols = np.nonzero(solved(status))
     out = {k: np.full((n, m), np.nan) for k in ("dFn", "dbeta", "fn_uncert", "beta_uncert", "theta_err", "R", "S")}
     out["steps"] = np.zeros((n, m), dtype=np.int64)
     out["turns_beam"] = np.full((n, m), -1, dtype=np.int64)
@@ -165,7 +170,7 @@ def classify(P, FT, Fn, beta, status, v):
     scale = np.maximum(1.0, np.abs(Fn))
     # 7 (inadmissible: the seta crosses the substrate) is a solved state with its values kept, so
     # it is verified like 0
-    ok = (status == 0) | (status == 7)
+    ok = solved(status)
     rel = np.abs(v["dFn"]) / scale
     conclusive_fn = v["fn_uncert"] / scale < 0.1 * WRONG_REL
     conclusive_beta = v["beta_uncert"] < 0.1 * WRONG_REL

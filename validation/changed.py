@@ -35,7 +35,7 @@ MOVED = 1e-12
 
 def changed_states(old: dict, new: dict) -> dict:
     """Masks of the newly solved states and of the solved states whose values moved."""
-    solved = lambda s: (s == 0) | (s == campaign.INADMISSIBLE)  # noqa: E731
+    solved = campaign.solved
     newly = solved(new["status"]) & ~solved(old["status"])
     both = solved(new["status"]) & solved(old["status"])
     if "Fn" not in old:   # the campaign's record: its values are compared bitwise by recheck

@@ -310,7 +310,7 @@ def _rk8_heights(theta, p, z, zmin, h, n, Fn, Ft, inv_ei, inv_ea):
     return theta, p, z, zmin
 
 
-def _heights_fixed(d, Ft, Fn, n, tip_rel=0.0):
+def _heights_fixed(d, Ft, Fn, n, tip_rel):
     """Backward shot with n steps per segment (common n) carrying z: the lowest z over [0, a]."""
     iea1, iea2 = _inv(d["EA1"]), _inv(d["EA2"])
     rad = 2.0 * (d["w"] - Ft * Ft * iea2 * 0.5) / d["EI2"]

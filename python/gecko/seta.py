@@ -19,6 +19,9 @@ exists there is unknown, unlike 2; 7 inadmissible: the state solves the equation
 (15)) but the deformed seta crosses the substrate before the contact edge (``min_z < 0``: the
 joint or the beam below it), or its largest axial strain exceeds ``strain_limit``. Status-7 states
 keep their ``Fn``, ``theta_joint`` and the rest (for drawing); they are no state of a real seta.
+A status-7 state whose ``min_z`` is NaN is one whose height check could not be made (its
+quadrature did not close; 5 of the 60,000 states of the project's stress campaign): it is not
+confirmed admissible, and not known to cross either.
 
 Every solved state reports ``min_z`` (its lowest height above the substrate over the seta, 0 when
 the contact edge is the lowest point), ``min_z_at`` (the arc length s of that point) and

@@ -9,15 +9,16 @@
 //
 // Height. With x along the substrate towards the contact and z the height above it (the edge at
 // z = 0), dz/ds = -(1 + T/EA) cos(theta) (the convected coordinate s of eqs (1)-(2)). So z can only
-// have a minimum before the edge where cos(theta) changes sign, i.e. where theta crosses +-pi/2 (mod
-// 2 pi), or at a segment end.
+// have a minimum before the edge where dz/ds changes sign: where theta crosses +-pi/2 (mod 2 pi),
+// where the stretch 1 + T/EA vanishes (a compression of EA or more, which the extensible model
+// allows), or at a segment end.
 //   * Fast, exact test (almost every state): when theta stays in [-pi/2, pi/2] along both segments
-//     (and 1 + T/EA > 0), z decreases monotonically from the base to the edge, so min z = 0 at the
-//     edge. Theta's range on a segment is that of its ends plus the turning angles reached inside
-//     (the solver's turning-point counts; the angles from the first integral, eq (8)): without
-//     turning points it costs a few comparisons and one sincos for the strain, with them an atan2
-//     and an asin.
-//   * Otherwise z is evaluated at every segment end and every crossing of theta = pi/2 + k pi, by
+//     and 1 + T/EA > 0 (T's lowest value above -EA; tension never stops it), z decreases
+//     monotonically from the base to the edge, so min z = 0 at the edge. Theta's range on a
+//     segment is that of its ends plus the turning angles reached inside (the solver's
+//     turning-point counts; the angles from the first integral, eq (8)): without turning points
+//     it costs a few comparisons and one sincos for the strain, with them an atan2 and an asin.
+//   * Otherwise z is evaluated at every segment end and every point where dz/ds changes sign, by
 //     integrating dz = -(1 + T/EA) cos(theta) dtheta / theta' over the monotone pieces of theta
 //     (split at the turning points theta* where theta' = 0, eq (8)'s first integral
 //     1/2 EI theta'^2 = M - N sin(psi) - N^2 sin^2(psi)/(2 EA), psi = theta - phi, gives theta' as
@@ -26,14 +27,19 @@
 //     turning point, and integrated by adaptive 16-point Gauss-Legendre (bisection until two
 //     levels agree to 1e-13 of the seta's length). The same quadrature integrates ds, and the
 //     lengths found must reproduce l1 and the free spatula length: a check of the decomposition
-//     (to 1e-9 of the seta's length; else the check reports itself as not made, min_z = NaN).
+//     (to 1e-9 of the seta's length). Next to a separatrix (the turning angle close to the saddle
+//     psi = pi/2) the length is too sensitive to the first integral's constant M for M formed from
+//     the state's rates; there the turning angle is solved from the length instead and accepted
+//     when the M it implies is the state's to 1e-10 (calibrate_near_saddle). If neither closes,
+//     the check reports itself as not made (min_z = NaN).
 //     The minimum over the candidates is exact up to the quadrature tolerance: no sampling in s.
-// Strain. The largest |T|/EA of each segment over theta's range (T = N sin(psi): N where the range
-// contains psi = pi/2 mod 2 pi, else the larger end), 0 for EA = infinity.
+// Strain. The largest |T|/EA of each segment over theta's range (T = N sin(psi): +-N where the
+// range contains psi = +-pi/2 mod 2 pi, else the ends), 0 for EA = infinity.
 #pragma once
 
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include "gecko/seta/critical_residual.hpp"
 #include "gecko/seta/elastica_segment.hpp"
@@ -225,12 +231,28 @@ inline bool height_walk(const height_segment<T>& g, T theta_s, T rate_s, T theta
   else dir = fabs(theta_s - th_max) <= fabs(theta_s - th_min) ? T(-1) : T(1);
   T th = theta_s;
   bool ok = true;
+  // z can only turn where dz/ds = -(1 + T/EA) cos(theta) changes sign: at theta = pi/2 + j pi, and
+  // where the stretch 1 + c N sin(theta - phi) vanishes (a compression of EA or more; c N > 1):
+  // theta = phi - asin(1/(c N)) + 2 j pi and phi + pi + asin(1/(c N)) + 2 j pi.
+  const bool stretch_zeros = g.c * g.N > 1;
+  const T w0 = stretch_zeros ? std::asin(1 / (g.c * g.N)) : T(0);
+  auto next_split = [&](T x, bool up) {  // the nearest split point strictly beyond x
+    auto member = [&](T offset, T period) {
+      T c = up ? offset + period * (floor((x - offset) / period) + 1)
+               : offset + period * (ceil((x - offset) / period) - 1);
+      if (up ? !(c > x) : !(c < x)) c += up ? period : -period;  // x itself a member, to rounding
+      return c;
+    };
+    T best = member(pi / 2, pi);
+    if (stretch_zeros) {
+      for (const T o : {g.phi - w0, g.phi + pi + w0}) {
+        const T c = member(o, two_pi);
+        if (up ? c < best : c > best) best = c;
+      }
+    }
+    return best;
+  };
   auto piece = [&](T a, T b, bool turn_a, bool turn_b) {
-    // split at pi/2 + j pi strictly inside (a, b)
-    const T lo = a < b ? a : b, hi = a < b ? b : a;
-    T first = ceil((lo - pi / 2) / pi) * pi + pi / 2;
-    if (!(first > lo)) first += pi;
-    T cur = a;
     auto sub = [&](T from, T to) {
       if (from == to) return;
       const bool ta = turn_a && from == a, tb = turn_b && to == b;
@@ -242,12 +264,11 @@ inline bool height_walk(const height_segment<T>& g, T theta_s, T rate_s, T theta
       z += dz;
       visit(s, z);
     };
-    if (a < b) {
-      for (T c = first; c < hi; c += pi) { sub(cur, c); cur = c; }
-    } else {
-      T c = floor((hi - pi / 2) / pi) * pi + pi / 2;
-      if (!(c < hi)) c -= pi;
-      for (; c > lo; c -= pi) { sub(cur, c); cur = c; }
+    const bool up = a < b;
+    T cur = a;
+    for (T c = next_split(a, up); up ? c < b : c > b; c = next_split(c, up)) {
+      sub(cur, c);
+      cur = c;
     }
     sub(cur, b);
   };
@@ -263,17 +284,96 @@ inline bool height_walk(const height_segment<T>& g, T theta_s, T rate_s, T theta
   return ok;
 }
 
-// Largest |T|/EA over theta in [lo, hi] on one segment, T = N sin(theta - phi).
+// One segment's walk, relative to its start: its length, the change of z, and its lowest point.
 template <class T>
-inline T segment_max_strain(T c, T N, T phi, T lo, T hi) {
-  using std::ceil; using std::fabs; using std::sin;
-  if (!(c > 0)) return 0;
+struct segment_walk {
+  bool ok = false;
+  T length = 0, dz = 0, zmin = 0, smin = 0;
+};
+
+template <class T>
+inline segment_walk<T> walk_segment(const height_segment<T>& g, T theta_s, T rate_s, T theta_e, int turning, T tol) {
+  segment_walk<T> w;
+  T s = 0, z = 0;
+  w.ok = height_walk(g, theta_s, rate_s, theta_e, turning, tol, s, z, [&](T ss, T zz) {
+    if (zz < w.zmin) {
+      w.zmin = zz;
+      w.smin = ss;
+    }
+  });
+  w.length = s;
+  w.dz = z;
+  return w;
+}
+
+// A libration whose turning angle lies eta short of the saddle psi = pi/2: up = cos(eta) and, from
+// R(up) = 0, M = N up (1 + c N up/2), f3 = N (1 + c N up/2)(up - u), f4 = 1 + c N u/(2 + c N up).
+// psi_top = pi/2 - eta is exact to rounding of pi/2, where asin(up) would lose half the digits
+// of eta.
+template <class T>
+inline height_segment<T> height_segment_near_saddle(T EI, T c, T N, T phi, T eta) {
+  using std::cos;
+  const T up = cos(eta);
+  const T h = 1 + c * N * up / 2;
+  return height_segment<T>{EI, c, N * up * h, N, phi, up, -N * h, c * N / (2 * h), seta_pi<T>() / 2 - eta};
+}
+
+// Near a separatrix (1 - up small) a libration's length grows like log(1/eta)/omega, and the
+// constant M of the first integral, formed from the rates at the segment's end, carries a rounding
+// error of order eps (EI theta'^2 + N) that is not small against N (1 - up): the walk's length then
+// misses the segment's. The length pins the state instead: eta is solved (secant in log eta) so
+// that the walk reproduces `length` (to len_tol/100, or to len_tol where eta's rounding stops the
+// secant), and the result is accepted only when the M it implies agrees with the one formed from
+// the state to m_tol (the state is then the given one within its own accuracy). False when the
+// walk fails or the secant does not converge.
+template <class T>
+inline bool calibrate_near_saddle(const height_segment<T>& g0, T theta_s, T rate_s, T theta_e, int turning,
+                                  T length, T tol, T len_tol, T m_tol, segment_walk<T>& w) {
+  using std::exp; using std::fabs; using std::log; using std::sqrt; using std::asin;
+  if (!(g0.up < 1) || turning < 1 || !(g0.up > 0)) return false;
+  auto miss = [&](T x, segment_walk<T>& out) {
+    out = walk_segment(height_segment_near_saddle(g0.EI, g0.c, g0.N, g0.phi, exp(x)), theta_s, rate_s, theta_e,
+                       turning, tol);
+    return out.ok ? out.length - length : std::numeric_limits<T>::quiet_NaN();
+  };
+  T x0 = log(2 * asin(sqrt((1 - g0.up) / 2)));  // eta of the given state
+  segment_walk<T> w0, w1;
+  T f0 = miss(x0, w0);
+  T x1 = x0 + (f0 > 0 ? T(0.05) : T(-0.05));  // longer than the segment: move away from the saddle
+  T f1 = miss(x1, w1);
+  for (int it = 0; it < 40 && f0 == f0 && f1 == f1; ++it) {
+    // Converged to len_tol/100, or to len_tol where the secant can go no further (eta's rounding).
+    if (fabs(f1) <= len_tol / 100 || ((f1 == f0 || x1 == x0) && fabs(f1) <= len_tol)) {
+      const height_segment<T> g = height_segment_near_saddle(g0.EI, g0.c, g0.N, g0.phi, exp(x1));
+      if (!(fabs(g.M - g0.M) <= m_tol)) return false;
+      w = w1;
+      return true;
+    }
+    if (f1 == f0) return false;
+    T x2 = x1 - f1 * (x1 - x0) / (f1 - f0);
+    if (x2 > x1 + 2) x2 = x1 + 2;  // log eta: steps of at most e^2 in eta
+    if (x2 < x1 - 2) x2 = x1 - 2;
+    if (!(x2 < T(0.45))) x2 = T(0.45);  // eta < pi/2
+    x0 = x1;
+    f0 = f1;
+    w0 = w1;
+    x1 = x2;
+    f1 = miss(x1, w1);
+  }
+  return false;
+}
+
+// The range of the axial force T = N sin(theta - phi) over theta in [lo, hi] on one segment: +-N
+// where the range contains psi = +-pi/2 (mod 2 pi), else the ends.
+template <class T>
+inline void segment_force_range(T N, T phi, T lo, T hi, T& t_min, T& t_max) {
+  using std::ceil; using std::sin;
   const T pi = seta_pi<T>();
-  // |sin psi| = 1 at psi = pi/2 + j pi inside?
-  const T first = ceil((lo - phi - pi / 2) / pi) * pi + pi / 2 + phi;
-  if (first <= hi) return c * N;
-  const T a = fabs(sin(lo - phi)), b = fabs(sin(hi - phi));
-  return c * N * (a > b ? a : b);
+  const T a = N * sin(lo - phi), b = N * sin(hi - phi);
+  t_min = a < b ? a : b;
+  t_max = a < b ? b : a;
+  if (ceil((lo - phi - pi / 2) / (2 * pi)) * 2 * pi + pi / 2 + phi <= hi) t_max = N;
+  if (ceil((lo - phi + pi / 2) / (2 * pi)) * 2 * pi - pi / 2 + phi <= hi) t_min = -N;
 }
 
 // The check on design parameters d (1/EA as c1, c2) and a pose; strain_limit: +inf for none.
@@ -302,18 +402,25 @@ inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const 
     const T lo1 = d.alpha1 < th_j1 ? d.alpha1 : th_j1, hi1 = d.alpha1 < th_j1 ? th_j1 : d.alpha1;
     const T lo2 = beta < half_pi ? beta : half_pi, hi2 = beta < half_pi ? half_pi : beta;
     if (lo1 >= -half_pi && hi1 <= half_pi && lo2 >= -half_pi && hi2 <= half_pi) {
-      // Strain from T at the ends and T' = Ft cos + Fn sin (T = N sin(psi), T' = N cos(psi)):
-      // an interior extremum of T where T' changes sign (the ranges are shorter than pi).
+      // T's range from T at the ends and T' = Ft cos + Fn sin (T = N sin(psi), T' = N cos(psi)):
+      // an interior extremum where T' changes sign (the ranges are shorter than pi), a maximum N
+      // where T' falls through 0 as theta increases, a minimum -N where it rises.
       const T N = sqrt(Fn * Fn + Ft * Ft);
-      auto seg_strain = [&](T c, T sl, T cl, T sh, T ch) {
-        if (!(c > 0)) return T(0);
-        const T Tl = Ft * sl - Fn * cl, Th = Ft * sh - Fn * ch;
-        const T dl = Ft * cl + Fn * sl, dh = Ft * ch + Fn * sh;
-        T m = fabs(Tl) > fabs(Th) ? fabs(Tl) : fabs(Th);
-        if ((dl > 0 && dh < 0) || (dl < 0 && dh > 0)) m = N;
-        return c * m;
+      T t_min = 0, t_max = 0;  // over the extensible segments, scaled by their 1/EA
+      auto seg_range = [&](T c, T th_a, T sa, T ca, T th_b, T sb, T cb) {
+        if (!(c > 0)) return;
+        if (th_b < th_a) {
+          std::swap(sa, sb);
+          std::swap(ca, cb);
+        }
+        const T Ta = Ft * sa - Fn * ca, Tb = Ft * sb - Fn * cb;
+        const T da = Ft * ca + Fn * sa, db = Ft * cb + Fn * sb;
+        T lo = Ta < Tb ? Ta : Tb, hi = Ta < Tb ? Tb : Ta;
+        if (da > 0 && db < 0) hi = N;
+        if (da < 0 && db > 0) lo = -N;
+        if (c * lo < t_min) t_min = c * lo;
+        if (c * hi > t_max) t_max = c * hi;
       };
-      T strain = 0;
       T sb = 0, cb = 0;
       if (d.c1 > 0 || d.c2 > 0) {
         sb = sin(beta);
@@ -321,18 +428,16 @@ inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const 
       }
       if (d.c1 > 0) {
         const T sj = sb * d.co2 - cb * d.s2, cj = cb * d.co2 + sb * d.s2;
-        strain = seg_strain(d.c1, d.s1, d.co1, sj, cj);
+        seg_range(d.c1, d.alpha1, d.s1, d.co1, th_j1, sj, cj);
       }
-      if (d.c2 > 0) {
-        const T s2 = seg_strain(d.c2, sb, cb, T(1), T(0));
-        if (s2 > strain) strain = s2;
-      }
-      // z decreases along s only while the stretch 1 + T/EA is positive.
-      if (strain < 1) {
+      if (d.c2 > 0) seg_range(d.c2, beta, sb, cb, half_pi, T(1), T(0));
+      // z decreases along s only while the stretch 1 + T/EA is positive (tension, T > 0, never
+      // stops it; a compression of EA or more would).
+      if (t_min > -1) {
         r.min_z = 0;
         r.where = a_edge;
         r.exact_fast_path = true;
-        return finish(strain);
+        return finish(t_max > -t_min ? t_max : -t_min);
       }
     }
   }
@@ -373,10 +478,21 @@ inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const 
   };
   turning_range(g1, d.alpha1, q, n1, lo1, hi1);
   turning_range(g2, beta, p, n2, lo2, hi2);
-  T strain = segment_max_strain(d.c1, N, phi, lo1, hi1);
-  const T s2 = segment_max_strain(d.c2, N, phi, lo2, hi2);
-  if (s2 > strain) strain = s2;
-  if (strain < 1 && lo1 >= -half_pi && hi1 <= half_pi && lo2 >= -half_pi && hi2 <= half_pi) {
+  // The axial strain T/EA over both segments: its largest magnitude is reported; its lowest value
+  // (the largest compression) decides whether the stretch 1 + T/EA stays positive.
+  T t_min = 0, t_max = 0;
+  auto strain_range = [&](T c, T lo, T hi) {
+    if (!(c > 0)) return;
+    T a, b;
+    segment_force_range(N, phi, lo, hi, a, b);
+    if (c * a < t_min) t_min = c * a;
+    if (c * b > t_max) t_max = c * b;
+  };
+  strain_range(d.c1, lo1, hi1);
+  strain_range(d.c2, lo2, hi2);
+  const T strain = t_max > -t_min ? t_max : -t_min;
+  const bool stretch_positive = t_min > -1;
+  if (stretch_positive && lo1 >= -half_pi && hi1 <= half_pi && lo2 >= -half_pi && hi2 <= half_pi) {
     // Turning points, but theta stays within [-pi/2, pi/2]: z is monotone all the same.
     r.min_z = 0;
     r.where = a_edge;
@@ -384,32 +500,38 @@ inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const 
     return finish(strain);
   }
   const T tol = T(1e-13) * L;
-  T s = 0, z = 0;
-  T zmin = 0, smin = 0;  // the base, at z = 0 before the shift
-  auto visit = [&](T ss, T zz) {
-    if (zz < zmin) {
-      zmin = zz;
-      smin = ss;
-    }
+  const T len_tol = T(1e-9) * L;
+  // The M of each segment to the accuracy of the state: its terms' magnitudes times 1e-10.
+  const T m_tol1 = T(1e-10) * (d.EI1 * rate_j1 * rate_j1 / 2 + N * fabs(v) + d.c1 * N * N * v * v / 2 + N);
+  const T m_tol2 = T(1e-10) * (d.EI2 * p * p / 2 + N * fabs(ub) + d.c2 * N * N * ub * ub / 2 + N);
+  auto walk = [&](const height_segment<T>& g, T th_s, T rate_s, T th_e, int n, T length, T m_tol) {
+    segment_walk<T> w = walk_segment(g, th_s, rate_s, th_e, n, tol);
+    if (w.ok && fabs(w.length - length) <= len_tol) return w;
+    segment_walk<T> c;
+    if (calibrate_near_saddle(g, th_s, rate_s, th_e, n, length, tol, len_tol, m_tol, c)) return c;
+    w.ok = false;
+    return w;
   };
-  bool ok = true;
-  {
-    T s_prev = s;
-    ok = height_walk(g1, d.alpha1, q, th_j1, n1, tol, s, z, visit) && ok;
-    if (fabs(s - s_prev - d.l1) > T(1e-9) * L) ok = false;
-  }
-  {
-    T s_prev = s;
-    ok = height_walk(g2, beta, p, half_pi, n2, tol, s, z, visit) && ok;
-    if (fabs(s - s_prev - free2) > T(1e-9) * L) ok = false;
-  }
-  if (!ok || !(strain < 1)) {
-    // The decomposition did not close, or the stretch 1 + T/EA reaches 0: no verdict on z.
+  const segment_walk<T> w1 = walk(g1, d.alpha1, q, th_j1, n1, d.l1, m_tol1);
+  const segment_walk<T> w2 = walk(g2, beta, p, half_pi, n2, free2, m_tol2);
+  const bool ok = w1.ok && w2.ok;
+  if (!ok) {
+    // The decomposition did not close: no verdict on z.
     r.max_axial_strain = strain;
     r.strain_exceeded = strain > strain_limit;
     return r;
   }
-  // Shift so that the contact edge is at z = 0 (its z after the walk is z).
+  // The base at z = 0, then shift so that the contact edge is at z = 0.
+  T zmin = 0, smin = 0;
+  if (w1.zmin < zmin) {
+    zmin = w1.zmin;
+    smin = w1.smin;
+  }
+  if (w1.dz + w2.zmin < zmin) {
+    zmin = w1.dz + w2.zmin;
+    smin = w1.length + w2.smin;
+  }
+  const T z = w1.dz + w2.dz;
   r.min_z = zmin - z;
   r.where = smin;
   if (!(r.min_z < 0)) {  // the edge itself is the lowest point
