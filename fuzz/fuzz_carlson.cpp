@@ -205,8 +205,13 @@ void fuzz_rj(Reader& in) {
     const long double scale = rj_pv_scale(x, y, z, p);
     // The long double reference goes through the same formula: its own error is about
     // 2^-63 * scale. Where that is not far below |ref| the cancellation (up to 1e71 seen:
-    // R_J(2^-1017, 2^-1017, 2^-773, -2^-1017)) leaves no digit to compare: uncheckable.
-    if (!(std::ldexp(scale, -63) * 1000 < std::fabs(ref))) {
+    // R_J(2^-1017, 2^-1017, 2^-773, -2^-1017)) leaves no digit to compare: uncheckable. So is a
+    // value below the allowance tol_rj eps scale itself, where any result of smaller magnitude
+    // (0 included) meets the bound, and a reference beyond DBL_MAX does not mean that the double
+    // result must overflow (R_J(0x1.49057e0109fffp-1016, 4 * 2^-1074, 2^-1074, -2 * 2^-1074):
+    // reference -1.2e460, allowance 1.9e461, gecko 0; cancellation factor 8.9e15: the next double
+    // below p gives nearly twice the value).
+    if (!(std::ldexp(scale, -63) * 1000 < std::fabs(ref)) || !(tol_rj * eps * scale < std::fabs(ref))) {
       ++ill_conditioned;
       return;
     }

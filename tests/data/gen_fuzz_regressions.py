@@ -77,6 +77,10 @@ CASES = [
     ("F4_rj_pv_pp_rounds_to_inf", "fixed", "rj", ["0x1.fffffffffffffp+1023", "0x1.ffffffffffffap+1023", "0x1.fffffffffffffp+1023", "-0x1.7e43c8800759cp+996"]),
     # (found while fixing F4) all arguments subnormal: p' rounded to 0 -> domain error
     ("F4_rj_pv_all_subnormal", "fixed", "rj", ["0x0.0000000000001p-1022", "0x0.0000000000001p-1022", "0x0p+0", "-0x0.0000000000001p-1022"]),
+    # R_J principal value at a near-zero of 19.20.14's sum (cancellation factor 8.9e15) whose value
+    # lies beyond DBL_MAX: the bound (8 eps times the factor) exceeds the value, and the double
+    # result (0) meets it without overflowing (the next double below p nearly doubles the value)
+    ("rj_pv_cancellation_beyond_max", "fixed", "rj", ["0x1.49057e0109fffp-1016", "0x0.0000000000004p-1022", "0x0.0000000000001p-1022", "-0x0.0000000000002p-1022"]),
     # F5: |phi| > pi/2 and m -> -inf: the odd-quadrant tail overflowed (NaN) or its R_D underflowed
     ("F5_e_tail_overflow", "fixed", "e", ["0x1.858eb79a20bb5p+5", "-0x1.ffffffffffffep+1023"]),
     ("F5_e_tail_rd_underflow", "fixed", "e", ["0x1.1604020a080a4p+1", "-0x1p+698"]),

@@ -80,7 +80,9 @@ void check_case(const fuzz_case& c) {
   const long double ref = c.reference;
   INFO(c.id << ": " << c.function << "(" << c.a[0] << ", " << c.a[1] << ", " << c.a[2] << ", " << c.a[3]
             << ") = " << got << ", mpmath " << static_cast<double>(ref));
-  CHECK(std::isfinite(got) == (std::fabs(ref) <= DBL_MAX));
+  // Where the bound exceeds the value itself (an R_J principal value at a near-zero of its
+  // formula's sum) a finite result may stand for a reference beyond DBL_MAX.
+  if (bound_eps * DBL_EPSILON < 1) CHECK(std::isfinite(got) == (std::fabs(ref) <= DBL_MAX));
   if (std::isnan(got)) return;
   if (std::isinf(got)) {  // the reference beyond DBL_MAX (checked above): the sign must agree
     CHECK(std::signbit(got) == (ref < 0));

@@ -28,7 +28,10 @@
 //   The three terms have mixed signs and the principal value passes through zero, so its
 //   relative error is that of the terms times the cancellation factor sum|terms| / |sum|
 //   (tests: within 8 eps times that factor, which reaches 370 in the table, i.e. up to 223
-//   ulps of the result there; p > 0 stays within a few ulps).
+//   ulps of the result there; p > 0 stays within a few ulps). Next to a zero of the sum the factor
+//   has no bound, and the result may carry no digit: rj_pv_cancellation_beyond_max in
+//   tests/data/fuzz_regressions.csv has factor 8.9e15 and value -1.2e460 and comes back 0, which
+//   meets the bound (the next double below its p nearly doubles the value).
 //
 // Domain: x, y, z >= 0 with at most one of them zero, p != 0. +inf in any argument gives 0.
 // NaN gives NaN quietly. float arguments are evaluated in double (one rounding at the end).
