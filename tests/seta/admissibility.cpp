@@ -286,22 +286,28 @@ TEST_CASE("states the check once left unmade: large strains and turning angles n
   // Poses of stress-campaign states (validation/data/stress_10000_states.npz) that the check used
   // to report as not made (min_z = NaN, hence status 7): an axial strain |T|/EA above 1 (in tension
   // the stretch stays positive and z monotone; in compression past EA the stretch changes sign, a
-  // further place where z can turn), and beams whose turning angle lies within 1e-6 rad of the
-  // saddle, where the first integral's constant formed from the rates misses the beam's length by
-  // up to 1e-6 and the turning angle is solved from the length instead. Each is compared with the
-  // dense RK4 evaluation shot back from the contact edge (the shot from the base is itself off by
-  // 1.5e-6 for design 2399: it starts from the rounded theta1'(0) next to the saddle).
+  // further place where z can turn), and beams whose turning angle lies next to the saddle, where
+  // the first integral's constant formed from the rates misses the beam's length and the turning
+  // angle is solved from the length instead (design 362: tests/seta/natural_state_paths.cpp).
+  // Each is compared with the dense RK4 evaluation shot back from the contact edge (the shot from
+  // the base is itself off by 1.5e-6 for design 2399: it starts from the rounded theta1'(0) next to
+  // the saddle).
   struct row {
     double EI1, EI2, EA1, EA2, l2, alpha1, alpha2, Ft, Fn, beta, q, p;
     int n1, n2;
   };
   const double inf = std::numeric_limits<double>::infinity();
   const row rows[] = {
-      // design 3652, Ft = -245.0: tension, strain 1.8 in the beam
+      // design 362 of tests/seta/natural_state_paths.cpp, Ft = 0: tension only, T/EA1 from 0.47 to
+      // 4.5 along the beam, theta within [0, 1.47] (z monotone; the check once gave up on it)
+      {0.4862557085350056, 95.663642985073622, 12.962666584858646, inf, 0.0069261819223409527, 1.196205214292706,
+       0.10533172401692666, 0.0, -58.9615654520907, 1.5698096461694737, -25.129321251984077, 0.14032219349991246,
+       1, 0},
+      // design 3652, Ft = -245.0: the beam compressed past EA1 (T/EA1 down to -2.1)
       {6.287875735944052, 37.756762661901234, 135.67837629266003, 43311.155846643385, 0.0019093487414188505,
        0.35256248530775103, 0.49187001283689347, -245.04002096991007, 156.22037911777855, 1.5705454138503523,
        -4.21824322283027, 0.13533947898580065, 1, 0},
-      // design 2544, Ft = -67.7: the beam compressed past EA1 (1 + T/EA1 < 0 on part of it)
+      // design 2544, Ft = -67.7: T/EA1 from -10 to 12 along the beam
       {6.6890551964584164, 3043.5835995244006, 6.4573193355359324, 15198.501823696923, 0.26376481872055646,
        1.5102958552049621, 0.044112254729731862, -67.687670081180642, -39.156400266773993, 1.5650123287293796,
        -9.2710531179693678, 0.020227997357758598, 1, 0},
