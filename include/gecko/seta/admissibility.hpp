@@ -341,8 +341,8 @@ inline bool calibrate_near_saddle(const height_segment<T>& g0, T theta_s, T rate
     return out.ok ? out.length - length : std::numeric_limits<T>::quiet_NaN();
   };
   T x0 = log(2 * asin(sqrt((1 - g0.up) / 2)));  // eta of the given state
-  segment_walk<T> w0, w1;
-  T f0 = miss(x0, w0);
+  segment_walk<T> w1;
+  T f0 = miss(x0, w1);
   T x1 = x0 + (f0 > 0 ? T(0.05) : T(-0.05));  // longer than the segment: move away from the saddle
   T f1 = miss(x1, w1);
   for (int it = 0; it < 40 && f0 == f0 && f1 == f1; ++it) {
@@ -360,7 +360,6 @@ inline bool calibrate_near_saddle(const height_segment<T>& g0, T theta_s, T rate
     if (!(x2 < T(0.45))) x2 = T(0.45);  // eta < pi/2
     x0 = x1;
     f0 = f1;
-    w0 = w1;
     x1 = x2;
     f1 = miss(x1, w1);
   }
@@ -452,10 +451,16 @@ inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const 
   const T p = st.theta_rate_joint, q = st.theta_rate_base;
   const T ub = sin(beta - phi), v = sin(th_j1 - phi);
   // First integrals (eq (8)): M2 from the joint state, M1 from the beam's end at the joint
-  // (EI1 theta1'(l1) = EI2 theta2'(l1), eq (4)).
-  const T M2 = d.EI2 * p * p / 2 + N * ub + d.c2 * N * N * ub * ub / 2;
-  const T rate_j1 = d.EI2 / d.EI1 * p;
-  const T M1 = d.EI1 * rate_j1 * rate_j1 / 2 + N * v + d.c1 * N * N * v * v / 2;
+  // (EI1 theta1'(l1) = EI2 theta2'(l1), eq (4)), each with the sum of its terms' magnitudes (N
+  // included), the scale of its rounding.
+  auto first_integral = [&](T EI, T c, T rate, T u, T& scale) {
+    const T bend = EI * rate * rate / 2, axial = c * N * N * u * u / 2;
+    scale = bend + N * fabs(u) + axial + N;
+    return bend + N * u + axial;
+  };
+  T scale1, scale2;
+  const T M2 = first_integral(d.EI2, d.c2, p, ub, scale2);
+  const T M1 = first_integral(d.EI1, d.c1, d.EI2 / d.EI1 * p, v, scale1);
   const auto g1 = make_height_segment(d.EI1, d.c1, M1, N, phi);
   const auto g2 = make_height_segment(d.EI2, d.c2, M2, N, phi);
   // theta's range on each segment: its ends and the turning angles reached (n >= 2 turning points
@@ -506,8 +511,7 @@ inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const 
   const T tol = T(1e-13) * L;
   const T len_tol = T(1e-9) * L;
   // The M of each segment to the accuracy of the state: its terms' magnitudes times 1e-10.
-  const T m_tol1 = T(1e-10) * (d.EI1 * rate_j1 * rate_j1 / 2 + N * fabs(v) + d.c1 * N * N * v * v / 2 + N);
-  const T m_tol2 = T(1e-10) * (d.EI2 * p * p / 2 + N * fabs(ub) + d.c2 * N * N * ub * ub / 2 + N);
+  const T m_tol1 = T(1e-10) * scale1, m_tol2 = T(1e-10) * scale2;
   auto walk = [&](const height_segment<T>& g, T th_s, T rate_s, T th_e, int n, T length, T m_tol) {
     segment_walk<T> w = walk_segment(g, th_s, rate_s, th_e, n, tol);
     if (w.ok && fabs(w.length - length) <= len_tol) return w;
