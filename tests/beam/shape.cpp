@@ -8,7 +8,7 @@
 
 namespace {
 template <class T>
-T rel(T a, T b) { return std::abs(a - b) / std::abs(b); }
+T rel_error(T a, T b) { return std::abs(a - b) / std::abs(b); }
 }  // namespace
 
 TEMPLATE_TEST_CASE("complex-step slope is exact to rounding", "[beam][shape]", float, double,
@@ -20,8 +20,8 @@ TEMPLATE_TEST_CASE("complex-step slope is exact to rounding", "[beam][shape]", f
   const gecko::parabolic_shape<T> para{T(3)};
   for (T x : {T(1e-20), T(1e-6), T(0.25), T(1), T(3)}) {
     const T exact = para.slope(x);
-    CHECK(rel(gecko::detail::shape_slope<T>(z, x), exact) <= 4 * eps);
-    CHECK(rel(gecko::detail::shape_slope<T>(para, x), exact) <= 4 * eps);  // explicit member
+    CHECK(rel_error(gecko::detail::shape_slope<T>(z, x), exact) <= 4 * eps);
+    CHECK(rel_error(gecko::detail::shape_slope<T>(para, x), exact) <= 4 * eps);  // explicit member
   }
   // An oscillating shape: the relative step h = eps x stays far below its scale.
   auto wave = [](auto x) { using std::sin; return sin(TestType(40) * x) + x * x * x; };

@@ -12,10 +12,8 @@
 
 using gecko_test::legendre_tally;
 
-namespace {
-const double pio2 = 1.5707963267948966;  // the double just below pi/2
-const double pi_d = 3.141592653589793;
-}  // namespace
+using gecko_test::pi_d;
+using gecko_test::pio2;
 
 // float: table inputs rounded to float, against double at the rounded inputs (legendre_tally).
 // m > 1 next to sin^2 phi = 1/m is included with no allowance for the conditioning in sin phi:

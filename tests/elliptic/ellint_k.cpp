@@ -9,12 +9,7 @@
 
 using gecko_test::reference_table;
 
-namespace {
-const reference_table& complete_table() {
-  static const reference_table t("elliptic_complete.csv");
-  return t;
-}
-}  // namespace
+using gecko_test::complete_table;
 
 // float: table inputs rounded to float (and still below 1), against double at the rounded
 // inputs (see typed_table.hpp).

@@ -11,6 +11,10 @@
 
 namespace gecko_test {
 
+// pi/2 and pi rounded to double (both just below the true values): amplitudes of the edge rows.
+const double pio2 = 1.5707963267948966;
+const double pi_d = 3.141592653589793;
+
 inline const reference_table& legendre_table() {
   static const reference_table t("elliptic_legendre.csv");
   return t;

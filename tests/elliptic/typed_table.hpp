@@ -64,4 +64,10 @@ error_tally kernel_tally(const reference_table& t, const std::string& what,
   return kernel_tally<T>(t, what, in, ref, kernel, [](std::size_t, const auto&) { return true; });
 }
 
+// The complete integrals' table (K and E share it), read once per executable.
+inline const reference_table& complete_table() {
+  static const reference_table t("elliptic_complete.csv");
+  return t;
+}
+
 }  // namespace gecko_test

@@ -9,51 +9,26 @@
 #include <cstdint>
 #include <fstream>
 #include <limits>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "gecko/seta/characteristics.hpp"
 #include "gecko/seta/sensitivities.hpp"
+#include "seta/csv_table.hpp"
 #include "seta/random_designs.hpp"
 #include "solved.hpp"
 
-namespace {
-double parse(const std::string& s) {
-  if (s == "inf") return std::numeric_limits<double>::infinity();
-  if (s.empty()) return std::numeric_limits<double>::quiet_NaN();
-  return std::stod(s);
-}
-std::vector<std::string> split(const std::string& l) {
-  std::vector<std::string> cells;
-  std::stringstream ss(l);
-  std::string cell;
-  while (std::getline(ss, cell, ',')) cells.push_back(cell);
-  if (!l.empty() && l.back() == ',') cells.push_back("");
-  return cells;
-}
-}  // namespace
+using gecko_test::design_of;
+using gecko_test::parse;
+using gecko_test::split_csv_line;
 
 TEST_CASE("characteristics match the reference designs", "[seta][characteristics][reference]") {
-  std::ifstream in(std::string(GECKO_TEST_DATA_DIR) + "/seta_reference_designs.csv");
-  std::string line;
-  REQUIRE(std::getline(in, line));
-  const auto header = split(line);
-  auto col = [&](const char* name) {
-    for (std::size_t i = 0; i < header.size(); ++i)
-      if (header[i] == name) return i;
-    FAIL("missing column " << name);
-    return std::size_t(0);
-  };
+  const auto t = gecko_test::read_csv_table(std::string(GECKO_TEST_DATA_DIR) + "/seta_reference_designs.csv");
+  REQUIRE(!t.rows.empty());
+  auto col = [&](const char* name) { return t.col(name); };
   int designs = 0, sticky = 0;
-  while (std::getline(in, line)) {
-    const auto r = split(line);
-    gecko::TwoLevelSeta<double> s;
-    s.EI1 = parse(r[col("EI1")]); s.EI2 = parse(r[col("EI2")]);
-    s.EA1 = parse(r[col("EA1")]); s.EA2 = parse(r[col("EA2")]);
-    s.l1 = parse(r[col("l1")]); s.l2 = parse(r[col("l2")]);
-    s.alpha1 = parse(r[col("alpha1")]); s.alpha2 = parse(r[col("alpha2")]);
-    s.w = parse(r[col("w")]);
+  for (const auto& r : t.rows) {
+    const gecko::TwoLevelSeta<double> s = design_of(t, r);
     gecko::critical_line_options<double> opt;
     opt.ft_end = parse(r[col("F_scale")]);
     const auto c = gecko::characteristics(s, opt);
@@ -203,7 +178,7 @@ TEST_CASE("max pull-off where the turning points change inside the bracket", "[s
   std::string line;
   REQUIRE(std::getline(in, line));
   REQUIRE(std::getline(in, line));
-  const auto r = split(line);
+  const auto r = split_csv_line(line);
   const auto s = turning_point_design();
   REQUIRE(parse(r[1]) == s.EI1);
   REQUIRE(parse(r[6]) == s.l2);

@@ -5,15 +5,14 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <fstream>
 #include <limits>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "gecko/seta/contact_state.hpp"
 #include "gecko/seta/critical_line.hpp"
+#include "seta/csv_table.hpp"
 
 namespace {
 
@@ -24,21 +23,10 @@ struct reference_row {
   int turning_points;
 };
 
-double parse(const std::string& s) {
-  if (s == "inf") return std::numeric_limits<double>::infinity();
-  return std::stod(s);
-}
-
 std::vector<reference_row> read_reference() {
   std::vector<reference_row> rows;
-  std::ifstream in(std::string(GECKO_TEST_DATA_DIR) + "/contact_state_reference.csv");
-  std::string line;
-  if (!std::getline(in, line)) return rows;
-  while (std::getline(in, line)) {
-    std::stringstream ss(line);
-    std::string cell;
-    std::vector<std::string> c;
-    while (std::getline(ss, cell, ',')) c.push_back(cell);
+  using gecko_test::parse;
+  for (const auto& c : gecko_test::read_csv_table(std::string(GECKO_TEST_DATA_DIR) + "/contact_state_reference.csv").rows) {
     if (c.size() < 18) continue;
     reference_row r;
     r.label = c[0];

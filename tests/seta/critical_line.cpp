@@ -4,76 +4,29 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "gecko/seta/critical_line.hpp"
 #include "gecko/seta/solve_on_line.hpp"
+#include "seta/csv_table.hpp"
 #include "seta/seta_shooting.hpp"
 #include "solved.hpp"
 
 namespace {
 
-double parse(const std::string& s) {
-  if (s == "inf") return std::numeric_limits<double>::infinity();
-  if (s.empty()) return std::numeric_limits<double>::quiet_NaN();
-  return std::stod(s);
-}
-
-struct csv {
-  std::vector<std::string> header;
-  std::vector<std::vector<std::string>> rows;
-  int col(const std::string& name) const {
-    for (std::size_t i = 0; i < header.size(); ++i)
-      if (header[i] == name) return static_cast<int>(i);
-    FAIL("missing column " << name);
-    return -1;
-  }
-};
-
-csv read_csv(const std::string& path) {
-  csv out;
-  std::ifstream in(path);
-  std::string line;
-  auto split = [](const std::string& l) {
-    std::vector<std::string> cells;
-    std::stringstream ss(l);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) cells.push_back(cell);
-    if (!l.empty() && l.back() == ',') cells.push_back("");
-    return cells;
-  };
-  if (!std::getline(in, line)) return out;
-  out.header = split(line);
-  while (std::getline(in, line))
-    if (!line.empty()) out.rows.push_back(split(line));
-  return out;
-}
-
-gecko::TwoLevelSeta<double> design_of(const csv& t, const std::vector<std::string>& r) {
-  gecko::TwoLevelSeta<double> s;
-  s.EI1 = parse(r[t.col("EI1")]);
-  s.EI2 = parse(r[t.col("EI2")]);
-  s.EA1 = parse(r[t.col("EA1")]);
-  s.EA2 = parse(r[t.col("EA2")]);
-  s.l1 = parse(r[t.col("l1")]);
-  s.l2 = parse(r[t.col("l2")]);
-  s.alpha1 = parse(r[t.col("alpha1")]);
-  s.alpha2 = parse(r[t.col("alpha2")]);
-  s.w = parse(r[t.col("w")]);
-  return s;
-}
+using gecko_test::csv_table;
+using gecko_test::design_of;
+using gecko_test::parse;
 
 const std::string reference_path = std::string(GECKO_TEST_DATA_DIR) + "/seta_reference.csv";
 
 }  // namespace
 
 TEST_CASE("critical line matches the independent references (mpmath ODE + quadrature)", "[seta][line][reference]") {
-  const csv t = read_csv(reference_path);
+  const csv_table t = gecko_test::read_csv_table(reference_path);
   REQUIRE(t.rows.size() >= 300);  // the reference table must exist (tests/data/gen_seta_reference.py)
   std::map<int, std::vector<std::size_t>> by_design;
   for (std::size_t i = 0; i < t.rows.size(); ++i) by_design[std::stoi(t.rows[i][t.col("design_id")])].push_back(i);

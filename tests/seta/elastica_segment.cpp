@@ -4,40 +4,17 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <fstream>
 #include <limits>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "gecko/seta/elastica_segment.hpp"
+#include "seta/csv_table.hpp"
 
-namespace {
-
-double parse(const std::string& s) {
-  if (s == "inf") return std::numeric_limits<double>::infinity();
-  return std::stod(s);
-}
-
-std::vector<std::vector<std::string>> read_csv(const std::string& path) {
-  std::ifstream in(path);
-  std::vector<std::vector<std::string>> rows;
-  std::string line;
-  std::getline(in, line);  // header
-  while (std::getline(in, line)) {
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    std::string cell;
-    while (std::getline(ss, cell, ',')) cells.push_back(cell);
-    rows.push_back(cells);
-  }
-  return rows;
-}
-
-}  // namespace
+using gecko_test::parse;
 
 TEST_CASE("elastica segment length matches 40-digit quadrature", "[seta][segment]") {
-  const auto rows = read_csv(std::string(GECKO_TEST_DATA_DIR) + "/seta_solver_segments.csv");
+  const auto rows = gecko_test::read_csv_table(std::string(GECKO_TEST_DATA_DIR) + "/seta_solver_segments.csv").rows;
   REQUIRE(rows.size() >= 150);
   double worst = 0;
   int kinds[4] = {0, 0, 0, 0};
