@@ -46,6 +46,12 @@ struct dense_ode {
   }
 };
 
+// The extreme value of the parabola through three equally spaced samples a, b, c (b the extreme
+// sample): an interior extremum of a smooth function, where the sample alone is off by O(h^2).
+long double parabola_extremum(long double a, long double b, long double c) {
+  return b - (c - a) * (c - a) / (8 * (a - 2 * b + c));
+}
+
 // theta, theta', x, z along s from the base; z relative to the contact edge at the end.
 dense_result dense_reference(const gecko::TwoLevelSeta<double>& s, const gecko::critical_state<double>& st,
                              int steps_per_unit = 20000) {
@@ -74,14 +80,11 @@ dense_result dense_reference(const gecko::TwoLevelSeta<double>& s, const gecko::
   y.th += s.alpha2;
   y.om *= s.EI1 / s.EI2;
   run(s.l2, s.EI2, c2, s.l1);
-  // Extrema of the samples, refined by the parabola through the neighbours (an interior extremum
-  // of a smooth function; the sampled value alone is off by O(h^2)).
+  // Extrema of the samples, refined by the parabola through the neighbours.
   auto refine = [&](const std::vector<long double>& v, std::size_t i, long double sign) {
     if (i == 0 || i + 1 >= v.size() || i == joint) return v[i];  // an end or the kink
-    const long double a = v[i - 1], b = v[i], c = v[i + 1];
-    const long double den = a - 2 * b + c;
-    if (!(sign * den < 0)) return b;
-    return b - (c - a) * (c - a) / (8 * den);
+    if (!(sign * (v[i - 1] - 2 * v[i] + v[i + 1]) < 0)) return v[i];
+    return parabola_extremum(v[i - 1], v[i], v[i + 1]);
   };
   dense_result r{0, 0, 0, y.th};
   std::size_t imax = 0;
@@ -134,10 +137,8 @@ dense_result dense_reference_from_edge(const gecko::TwoLevelSeta<double>& s, con
           r.where = s_end + h * (i + 1);
         }
         // an interior minimum at the previous sample: refine by the parabola through its neighbours
-        if (i >= 1 && prev.z < prev2.z && prev.z < y.z) {
-          const long double den = prev2.z - 2 * prev.z + y.z;
-          if (den > 0) r.min_z = std::min(r.min_z, prev.z - (y.z - prev2.z) * (y.z - prev2.z) / (8 * den));
-        }
+        if (i >= 1 && prev.z < prev2.z && prev.z < y.z && prev2.z - 2 * prev.z + y.z > 0)
+          r.min_z = std::min(r.min_z, parabola_extremum(prev2.z, prev.z, y.z));
       }
     };
     run(s.l2, s.EI2, c2, s.l1 + s.l2);
