@@ -31,7 +31,9 @@
 //     psi = pi/2) the length is too sensitive to the first integral's constant M for M formed from
 //     the state's rates; there the turning angle is solved from the length instead and accepted
 //     when the M it implies is the state's to 1e-10 (calibrate_near_saddle). If neither closes,
-//     the check reports itself as not made (min_z = NaN).
+//     the check reports itself as not made (min_z = NaN). A beam that stays monotone (theta in
+//     [-pi/2, pi/2], stretch positive) while the spatula does not is not walked: its lowest point
+//     is the joint. Each quadrature node costs one sincos (height_gl).
 //     The minimum over the candidates is exact up to the quadrature tolerance: no sampling in s.
 // Strain. The largest |T|/EA of each segment over theta's range (T = N sin(psi): +-N where the
 // range contains psi = +-pi/2 mod 2 pi, else the ends), 0 for EA = infinity.
@@ -114,77 +116,127 @@ struct height_segment {
   T up;        // root of f3 (turning points at sin(psi) = up); > 1: rotation, no turning point
   T b3, b4;    // R = f3 f4, f3 = M + b3 u = -b3 (up - u), f4 = 1 + b4 u
   T psi_top;   // asin(up) for a libration
+  T cos_top;   // cos(psi_top) (0 for a rotation): the turning angles' psi are psi_top and -pi - psi_top
+  T sin_phi, cos_phi;
 };
 
 template <class T>
 inline height_segment<T> make_height_segment(T EI, T c, T M, T N, T phi) {
-  using std::asin; using std::sqrt;
-  height_segment<T> g{EI, c, M, N, phi, 0, 0, 0, 0};
+  using std::asin; using std::cos; using std::sin; using std::sqrt;
+  height_segment<T> g{EI, c, M, N, phi, 0, 0, 0, 0, 0, sin(phi), cos(phi)};
   const T s = sqrt(1 + 2 * c * M);
   g.b3 = -N * (1 + s) / 2;
   g.b4 = c * N / (1 + s);
   g.up = 2 * M / (N * (1 + s));
   g.psi_top = g.up < 1 ? asin(g.up) : seta_pi<T>() / 2;
+  g.cos_top = g.up < 1 ? sqrt((1 - g.up) * (1 + g.up)) : T(0);
   return g;
 }
 
-// |theta'| at theta (u = sin(theta - phi)), from the first integral. In a libration f3 = -b3 (up - sin psi) is written
-// with a turning angle theta_t (sin(theta_t - phi) = up) and delta = theta_t - theta as
-// 2 cos(theta_t - phi - delta/2) sin(delta/2): no cancellation as theta -> theta_t when the caller
-// gives delta exactly (the quadrature maps t to the distance from a turning end directly).
+// The turning angle of the libration window around theta nearest to it; upper: it is the window's
+// top, psi = psi_top (else its bottom, psi = -pi - psi_top).
 template <class T>
-inline T height_rate(const height_segment<T>& g, T u, T theta_t, T delta) {
-  using std::cos; using std::sin; using std::sqrt;
-  const T f3 = g.up < 1 ? -g.b3 * 2 * cos(theta_t - g.phi - delta / 2) * sin(delta / 2) : g.M + g.b3 * u;
-  const T f4 = 1 + g.b4 * u;
-  const T R = f3 * f4;
-  return R > 0 ? sqrt(2 * R / g.EI) : T(0);
-}
-
-// The turning angle of the libration window around theta nearest to it.
-template <class T>
-inline T nearest_turning(const height_segment<T>& g, T theta) {
+inline T nearest_turning(const height_segment<T>& g, T theta, bool& upper) {
   using std::floor;
   const T pi = seta_pi<T>();
   const T psi = theta - g.phi;
-  const T k = floor((psi + pi / 2) / (2 * pi) + T(0.5));
+  const T k = floor((psi + pi / 2) * (1 / (2 * pi)) + T(0.5));
   const T pr = psi - k * 2 * pi;  // in the window [-pi - a, a] around -pi/2
-  return (pr > -pi / 2 ? g.psi_top : -pi - g.psi_top) + g.phi + k * 2 * pi;
+  upper = pr > -pi / 2;
+  return (upper ? g.psi_top : -pi - g.psi_top) + g.phi + k * 2 * pi;
 }
 
-// ds and dz over theta from a to b (theta monotone there) for t in [t0, t1] of the map
-// theta = a + (b - a) sin^2(pi t/2) = b - (b - a) cos^2(pi t/2), by n-point Gauss-Legendre.
-// turn_a, turn_b: the end is a turning point (theta' = 0 there).
+// sin and cos of pi w x/2 and of pi w (1 - x)/2 at the n nodes x on [0, 1], for the widths
+// w = 2^-depth of the adaptive quadrature's intervals: the map's sin(pi t/2) and cos(pi t/2) =
+// sin(pi (1 - t)/2) at the nodes of [t0, t0 + w] then follow by the addition theorem from one
+// sincos at each end of the interval, without cancellation (both terms are >= 0).
+template <class T, int n>
+struct gauss_legendre_map {
+  static constexpr int depths = 31;
+  T sx[depths][n], cx[depths][n], s1x[depths][n], c1x[depths][n];
+  gauss_legendre_map() {
+    using std::cos; using std::ldexp; using std::sin;
+    const auto& q = gauss_legendre<T, n>::get();
+    for (int d = 0; d < depths; ++d) {
+      const T h = seta_pi<T>() / 2 * ldexp(T(1), -d);
+      for (int i = 0; i < n; ++i) {
+        sx[d][i] = sin(h * q.x[i]);
+        cx[d][i] = cos(h * q.x[i]);
+        s1x[d][i] = sin(h * (1 - q.x[i]));
+        c1x[d][i] = cos(h * (1 - q.x[i]));
+      }
+    }
+  }
+  static const gauss_legendre_map& get() {
+    static const gauss_legendre_map m;
+    return m;
+  }
+};
+
+// ds and dz over theta from a to b (theta monotone there) for t in [t0, t1] = [t0, t0 + 2^-depth]
+// of the map theta = a + (b - a) sin^2(pi t/2) = b - (b - a) cos^2(pi t/2), by n-point
+// Gauss-Legendre. turn_a, turn_b: the end is a turning point (theta' = 0 there); upper_a,
+// upper_b: that turning point is its window's top (psi = psi_top), else its bottom.
+// In a libration every node is written relative to a turning angle theta_t (the turning end the
+// node lies on the side of, else the nearest one) with delta = theta_t - theta: one sincos of
+// delta/2 gives u = sin(psi), cos(theta) and f3 = -b3 (up - u) = -2 b3 sin(delta/2)
+// cos(psi_t - delta/2), without cancellation as theta -> theta_t when the caller gives delta
+// exactly (the map gives the distance from a turning end directly); sin(psi_t) = up and
+// cos(psi_t) = +-cos_top are the segment's.
 template <int n, class T>
-inline void height_gl(const height_segment<T>& g, T a, T b, bool turn_a, bool turn_b, T t0, T t1, T& ds, T& dz) {
-  using std::cos; using std::sin;
+inline void height_gl(const height_segment<T>& g, T a, T b, bool turn_a, bool turn_b, bool upper_a, bool upper_b,
+                      T t0, int depth, T& ds, T& dz) {
+  using std::cos; using std::sin; using std::sqrt;
   const auto& q = gauss_legendre<T, n>::get();
+  const auto& m = gauss_legendre_map<T, n>::get();
   const T pi = seta_pi<T>();
+  const T w = std::ldexp(T(1), -depth);
+  const T t1 = t0 + w;
+  const T s0 = sin(pi * t0 / 2), c0 = cos(pi * t0 / 2);
+  const T s1 = sin(pi * (1 - t1) / 2), c1 = cos(pi * (1 - t1) / 2);
   const T span = b - a;
   const T sgn = span >= 0 ? T(1) : T(-1);
+  const T two_over_EI = 2 / g.EI, cN = g.c * g.N;
   ds = 0;
   dz = 0;
   for (int i = 0; i < n; ++i) {
-    const T t = t0 + (t1 - t0) * q.x[i];
-    const T sh = sin(pi * t / 2), ch = cos(pi * t / 2);
+    const T t = t0 + w * q.x[i];
+    const T sh = s0 * m.cx[depth][i] + c0 * m.sx[depth][i];   // sin(pi t/2)
+    const T ch = s1 * m.c1x[depth][i] + c1 * m.s1x[depth][i];  // cos(pi t/2)
     const T th = t < T(0.5) ? a + span * sh * sh : b - span * ch * ch;
     const T dth = span * pi * sh * ch;  // dtheta/dt
-    const T u = sin(th - g.phi);
-    T rate;
+    T u, f3, cos_th;
     if (g.up < 1) {
-      if (turn_b && (t >= T(0.5) || !turn_a)) rate = height_rate(g, u, b, span * ch * ch);
-      else if (turn_a) rate = height_rate(g, u, a, -span * sh * sh);
-      else {
-        const T tt = nearest_turning(g, th);
-        rate = height_rate(g, u, tt, tt - th);
+      T delta;
+      bool upper;
+      if (turn_b && (t >= T(0.5) || !turn_a)) {
+        delta = span * ch * ch;
+        upper = upper_b;
+      } else if (turn_a) {
+        delta = -span * sh * sh;
+        upper = upper_a;
+      } else {
+        delta = nearest_turning(g, th, upper) - th;
       }
+      const T sp = g.up, cp = upper ? g.cos_top : -g.cos_top;  // sin, cos of psi_t
+      const T sd = sin(delta / 2), cd = cos(delta / 2);
+      const T sin_d = 2 * sd * cd, cos_d = 1 - 2 * sd * sd;
+      u = sp * cos_d - cp * sin_d;
+      f3 = -g.b3 * 2 * sd * (cp * cd + sp * sd);
+      const T st = g.sin_phi * cp + g.cos_phi * sp, ct = g.cos_phi * cp - g.sin_phi * sp;  // of theta_t
+      cos_th = ct * cos_d + st * sin_d;
     } else {
-      rate = height_rate(g, u, th, T(0));
+      const T sn = sin(th), cs = cos(th);
+      u = sn * g.cos_phi - cs * g.sin_phi;
+      f3 = g.M + g.b3 * u;
+      cos_th = cs;
     }
-    if (!(rate > 0)) continue;  // only at a turning point itself, where dtheta/dt vanishes too
-    const T w = q.w[i] * (t1 - t0) * dth * sgn / rate;  // ds
-    ds += w;
-    dz -= w * (1 + g.c * g.N * u) * cos(th);
+    const T R = f3 * (1 + g.b4 * u);
+    if (!(R > 0)) continue;  // only at a turning point itself, where dtheta/dt vanishes too
+    const T rate = sqrt(R * two_over_EI);
+    const T wt = q.w[i] * w * dth * sgn / rate;  // ds
+    ds += wt;
+    dz -= wt * (1 + cN * u) * cos_th;
   }
 }
 
@@ -195,12 +247,12 @@ inline void height_gl(const height_segment<T>& g, T a, T b, bool turn_a, bool tu
 // against 8, 10 and 20/12, 24/16, and the earlier halves-against-whole test); budget
 // caps the number of intervals (false when it runs out or depth 30 is reached).
 template <class T>
-inline bool height_adaptive(const height_segment<T>& g, T a, T b, bool turn_a, bool turn_b, T t0, T t1, T tol,
-                            int depth, int& budget, T& ds, T& dz) {
+inline bool height_adaptive(const height_segment<T>& g, T a, T b, bool turn_a, bool turn_b, bool upper_a,
+                            bool upper_b, T t0, T tol, int depth, int& budget, T& ds, T& dz) {
   using std::fabs;
   T ds16, dz16, ds12, dz12;
-  height_gl<16>(g, a, b, turn_a, turn_b, t0, t1, ds16, dz16);
-  height_gl<12>(g, a, b, turn_a, turn_b, t0, t1, ds12, dz12);
+  height_gl<16>(g, a, b, turn_a, turn_b, upper_a, upper_b, t0, depth, ds16, dz16);
+  height_gl<12>(g, a, b, turn_a, turn_b, upper_a, upper_b, t0, depth, ds12, dz12);
   --budget;
   const bool agree = fabs(ds16 - ds12) <= tol && fabs(dz16 - dz12) <= tol;
   if (agree || depth >= 30 || budget <= 0) {
@@ -208,9 +260,9 @@ inline bool height_adaptive(const height_segment<T>& g, T a, T b, bool turn_a, b
     dz += dz16;
     return agree;
   }
-  const T tm = (t0 + t1) / 2;
-  const bool ok_l = height_adaptive(g, a, b, turn_a, turn_b, t0, tm, tol, depth + 1, budget, ds, dz);
-  const bool ok_r = height_adaptive(g, a, b, turn_a, turn_b, tm, t1, tol, depth + 1, budget, ds, dz);
+  const T tm = t0 + std::ldexp(T(1), -depth - 1);
+  const bool ok_l = height_adaptive(g, a, b, turn_a, turn_b, upper_a, upper_b, t0, tol, depth + 1, budget, ds, dz);
+  const bool ok_r = height_adaptive(g, a, b, turn_a, turn_b, upper_a, upper_b, tm, tol, depth + 1, budget, ds, dz);
   return ok_l && ok_r;
 }
 
@@ -257,13 +309,13 @@ inline bool height_walk(const height_segment<T>& g, T theta_s, T rate_s, T theta
     }
     return best;
   };
-  auto piece = [&](T a, T b, bool turn_a, bool turn_b) {
+  auto piece = [&](T a, T b, bool turn_a, bool turn_b, bool upper_a, bool upper_b) {
     auto sub = [&](T from, T to) {
       if (from == to) return;
       const bool ta = turn_a && from == a, tb = turn_b && to == b;
       T ds = 0, dz = 0;
       int budget = 1000;
-      if (!height_adaptive(g, from, to, ta, tb, T(0), T(1), tol, 0, budget, ds, dz)) ok = false;
+      if (!height_adaptive(g, from, to, ta, tb, upper_a, upper_b, T(0), tol, 0, budget, ds, dz)) ok = false;
       s += ds;
       z += dz;
       visit(s, z);
@@ -276,15 +328,17 @@ inline bool height_walk(const height_segment<T>& g, T theta_s, T rate_s, T theta
     }
     sub(cur, b);
   };
+  bool upper = false;  // the turning point just passed is the window's top (theta = th_max)
   for (int i = 0; i < turning; ++i) {
     const T next = dir > 0 ? th_max : th_min;
     if ((next - th) * dir < -tol) return false;
-    piece(th, next, i > 0, true);
+    piece(th, next, i > 0, true, upper, dir > 0);
+    upper = dir > 0;
     th = next;
     dir = -dir;
   }
   if ((theta_e - th) * dir < -1e-9) return false;  // the last piece runs against theta'
-  piece(th, theta_e, turning > 0, false);
+  piece(th, theta_e, turning > 0, false, upper, false);
   return ok;
 }
 
@@ -313,13 +367,15 @@ inline segment_walk<T> walk_segment(const height_segment<T>& g, T theta_s, T rat
 // A libration whose turning angle lies eta short of the saddle psi = pi/2: up = cos(eta) and, from
 // R(up) = 0, M = N up (1 + c N up/2), f3 = N (1 + c N up/2)(up - u), f4 = 1 + c N u/(2 + c N up).
 // psi_top = pi/2 - eta is exact to rounding of pi/2, where asin(up) would lose half the digits
-// of eta.
+// of eta, and cos(psi_top) = sin(eta) keeps all of them.
 template <class T>
 inline height_segment<T> height_segment_near_saddle(T EI, T c, T N, T phi, T eta) {
   using std::cos;
   const T up = cos(eta);
   const T h = 1 + c * N * up / 2;
-  return height_segment<T>{EI, c, N * up * h, N, phi, up, -N * h, c * N / (2 * h), seta_pi<T>() / 2 - eta};
+  const T psi_top = seta_pi<T>() / 2 - eta;
+  return height_segment<T>{EI, c, N * up * h, N, phi, up, -N * h, c * N / (2 * h), psi_top, std::sin(eta),
+                           std::sin(phi), std::cos(phi)};
 }
 
 // Near a separatrix (1 - up small) a libration's length grows like log(1/eta)/omega, and the
@@ -498,6 +554,7 @@ inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const 
     if (c * b > t_max) t_max = c * b;
   };
   strain_range(d.c1, lo1, hi1);
+  const bool beam_stretch_positive = t_min > -1;
   strain_range(d.c2, lo2, hi2);
   const T strain = t_max > -t_min ? t_max : -t_min;
   const bool stretch_positive = t_min > -1;
@@ -520,7 +577,17 @@ inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const 
     w.ok = false;
     return w;
   };
-  const segment_walk<T> w1 = walk(g1, d.alpha1, q, th_j1, n1, d.l1, m_tol1);
+  // A beam whose theta stays in [-pi/2, pi/2] with a positive stretch has z decreasing along it: its
+  // lowest point is the joint, where the spatula's walk starts, so it is not walked (its record
+  // puts the origin of z at the joint).
+  const bool beam_monotone = beam_stretch_positive && lo1 >= -half_pi && hi1 <= half_pi;
+  segment_walk<T> w1;
+  if (beam_monotone) {
+    w1.ok = true;
+    w1.length = d.l1;
+  } else {
+    w1 = walk(g1, d.alpha1, q, th_j1, n1, d.l1, m_tol1);
+  }
   const segment_walk<T> w2 = walk(g2, beta, p, half_pi, n2, free2, m_tol2);
   const bool ok = w1.ok && w2.ok;
   if (!ok) {
@@ -529,8 +596,9 @@ inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const 
     r.strain_exceeded = strain > strain_limit;
     return r;
   }
-  // The base at z = 0, then shift so that the contact edge is at z = 0.
-  T zmin = 0, smin = 0;
+  // The base (or the joint, for a beam not walked) at z = 0, then shift so that the contact edge is
+  // at z = 0.
+  T zmin = 0, smin = beam_monotone ? d.l1 : T(0);
   if (w1.zmin < zmin) {
     zmin = w1.zmin;
     smin = w1.smin;
