@@ -553,12 +553,12 @@ inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const 
     if (c * a < t_min) t_min = c * a;
     if (c * b > t_max) t_max = c * b;
   };
+  // A segment whose theta stays in [-pi/2, pi/2] with a positive stretch has z decreasing along it.
   strain_range(d.c1, lo1, hi1);
-  const bool beam_stretch_positive = t_min > -1;
+  const bool beam_monotone = t_min > -1 && lo1 >= -half_pi && hi1 <= half_pi;
   strain_range(d.c2, lo2, hi2);
   const T strain = t_max > -t_min ? t_max : -t_min;
-  const bool stretch_positive = t_min > -1;
-  if (stretch_positive && lo1 >= -half_pi && hi1 <= half_pi && lo2 >= -half_pi && hi2 <= half_pi) {
+  if (beam_monotone && t_min > -1 && lo2 >= -half_pi && hi2 <= half_pi) {  // the spatula too
     // Turning points, but theta stays within [-pi/2, pi/2]: z is monotone all the same.
     r.min_z = 0;
     r.where = a_edge;
@@ -577,10 +577,8 @@ inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const 
     w.ok = false;
     return w;
   };
-  // A beam whose theta stays in [-pi/2, pi/2] with a positive stretch has z decreasing along it: its
-  // lowest point is the joint, where the spatula's walk starts, so it is not walked (its record
-  // puts the origin of z at the joint).
-  const bool beam_monotone = beam_stretch_positive && lo1 >= -half_pi && hi1 <= half_pi;
+  // A monotone beam's lowest point is the joint, where the spatula's walk starts, so it is not
+  // walked (its record puts the origin of z at the joint).
   segment_walk<T> w1;
   if (beam_monotone) {
     w1.ok = true;
