@@ -32,7 +32,9 @@ Per state:
   on the line followed from Ft = 0; the gecko trace (used only here, after the scan) says whether
   that line ended before this Ft as the claim states (``turned_back`` at a fold for status 2,
   ``unsupported_state`` for status 3: the root then lies on another branch, or beyond a stretch
-  outside the forms, and the claim as stated holds: ``root_beyond_line_end``), else
+  outside the forms, and the claim as stated holds: ``root_beyond_line_end``; for status 3 with
+  no line at all, because the homotopy to the natural state ran into the edge of the forms:
+  ``root_but_no_natural_state``), else
   ``contradicted``: the solver should have found the state. ``root_below_traced_range``: Ft < 0
   below every traced node (the trace runs from Ft = 0 towards (Ft)max): the claim "not reached"
   holds by construction, but a critical state exists there.
@@ -40,6 +42,7 @@ Per state:
 
     python3 -m validation.claims --sample 40 [--seed 1] [--grid 61] [--json validation/results/claims.json]
     python3 -m validation.claims --npz NEW.npz --since OLD.npz --json F.json   (every new claim)
+    python3 -m validation.claims --npz NEW.npz --since OLD.npz --sample 12 --json F.json  (12 of them)
 """
 from __future__ import annotations
 
@@ -160,6 +163,11 @@ def line_end_check(p, ft: float, status: int) -> str:
     import gecko
     s = gecko.TwoLevelSeta(**dict(zip(FIELDS, map(float, p))))
     line = s.critical_line(errors="nan")
+    if not len(line.Ft) and status == 3 and line.end_code == gecko.LineEnd.unsupported_state:
+        # No line at all: the homotopy to the natural state ran into the edge of the forms, so the
+        # line followed from Ft = 0 left them before it started. The root lies on a branch that
+        # does not pass through a natural state inside the forms.
+        return "root_but_no_natural_state"
     if len(line.Ft) and ft < float(np.min(line.Ft)):
         # The trace runs from Ft = 0 towards (Ft)max: a negative Ft below its range is "not
         # reached" by construction, though a critical state exists there.
@@ -197,7 +205,13 @@ def run(n: int, seed: int = 1, grid: int = 61, npz: str = STATES, progress: bool
     P, FT, ST = z["P"], z["FT"], z["status"]
     t0 = time.time()
     states = []
-    picks = new_claims(z, np.load(since)) if since else sample_claims(z, n, seed)
+    if since:
+        picks = new_claims(z, np.load(since))
+        if n is not None and n < len(picks):  # a seeded sample of them (each scan takes minutes)
+            rng = np.random.default_rng(seed)
+            picks = [picks[k] for k in sorted(rng.choice(len(picks), size=n, replace=False))]
+    else:
+        picks = sample_claims(z, 40 if n is None else n, seed)
     n = len(picks)
     for k, (i, j) in enumerate(picks):
         p, ft, status = P[i], float(FT[i, j]), int(ST[i, j])
@@ -220,14 +234,16 @@ def run(n: int, seed: int = 1, grid: int = 61, npz: str = STATES, progress: bool
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--sample", type=int, default=40)
+    ap.add_argument("--sample", type=int, default=None,
+                    help="states to check: a seeded sample of the claims (default 40), or with "
+                         "--since of the new claims (default: all of them)")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--grid", type=int, default=61)
     ap.add_argument("--npz", default=STATES)
     ap.add_argument("--json", default=OUT)
     ap.add_argument("--since", default=None, metavar="OLD.npz",
-                    help="check every state whose status became 2 or 3 since OLD.npz (both from "
-                         "validation.recheck --save) instead of a sample")
+                    help="check the states whose status became 2 or 3 since OLD.npz (both from "
+                         "validation.recheck --save): all of them, or --sample N of them")
     args = ap.parse_args(argv)
     res = run(args.sample, args.seed, args.grid, args.npz, progress=True, since=args.since)
     print(json.dumps(res["counts"], indent=1))

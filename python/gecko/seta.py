@@ -12,7 +12,8 @@ and folds included, the GIL released)::
 Status codes (``line.status``): 0 converged; 1 Newton did not converge; 2 no critical state on the
 line followed from Ft = 0 (beyond a fold, |Ft| > (Ft)max; critical states on branches that line
 never reaches may exist there, and an independent scan finds them at negative Ft); 3 state outside the model's forms
-(also: the line left them before reaching this Ft); 4 singular (Ft exactly at a fold); 5 bad input
+(also: the line left them before reaching this Ft, or already the homotopy to its natural state did,
+so that there is no line); 4 singular (Ft exactly at a fold); 5 bad input
 under ``errors="nan"``; 6 not reached: the continuation gave up before this Ft (point budget, step
 collapse, corrector failure; ``critical_line().end`` says which), so whether a critical state
 exists there is unknown, unlike 2; 7 inadmissible: the state solves the equations (paper 001 eq

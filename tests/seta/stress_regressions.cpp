@@ -118,3 +118,34 @@ TEST_CASE("turning points on a libration path of more than one period are counte
     CHECK(st.turning_points_beam == shot.sign_changes_beam);
   }
 }
+
+// Campaign designs 21, 82 and 412 (validation/data/stress_10000_states.npz; EI1, EI2, EA1, EA2, l2,
+// alpha1, alpha2): every homotopy path to the natural state runs into the edge of the forms (an
+// axial load comparable to EA1) before lambda = 1. That is the model's limit, as for a line that
+// ends there, not a failure of the solver: status 3 at every Ft (it was 1, "not converged", because
+// the arclength follower's end was not passed on). The independent scan of validation/claims.py
+// finds no critical state at all at Ft = 0 for design 21.
+TEST_CASE("a natural state beyond the edge of the forms is unsupported, not 'not converged'", "[seta][status][stress]") {
+  const std::vector<crawl_case> cases = {
+      {92.7380486710091, 1.9262960365946813, 8.025603930093203, 37751.233851427794, 0.012021298756849232,
+       0.6496289113613277, 0.8029273161489582, {-145.87, 0.0, 156.66}},
+      {31.45110767844163, 11.191498203550267, 10.05589488394125, 4898084.607354954, 0.06933607977978656,
+       0.22910695181972682, 0.5327939292588411, {-100.0, 0.0, 100.0}},
+      {42.959605421485826, 163.75155533902105, 3.139660912021994, 4342775.706550627, 0.18057798618173582,
+       0.177822589108365, 0.5902133783466722, {-50.0, 0.0, 50.0}},
+  };
+  for (const auto& c : cases) {
+    const auto s = design(c);
+    const auto line = gecko::critical_line(s);
+    INFO("EI1 " << s.EI1 << " end " << static_cast<int>(line.end) << " natural " << static_cast<int>(line.natural.status));
+    CHECK(line.end == gecko::line_end::unsupported_state);
+    CHECK(line.natural.status == gecko::critical_status::unsupported_state);
+    CHECK(line.points.empty());
+    for (const auto& st : gecko::critical_line_at(s, c.Ft)) {
+      INFO("Ft " << st.Ft << " status " << static_cast<int>(st.status));
+      CHECK(st.status == gecko::critical_status::unsupported_state);
+      CHECK(std::isnan(st.Fn));
+      CHECK(std::isnan(st.theta_joint));
+    }
+  }
+}

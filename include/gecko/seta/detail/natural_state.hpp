@@ -27,12 +27,12 @@ namespace detail {
 
 // The path followed by pseudo-arclength continuation in (z, lambda) from the solved start (z0 at
 // lambda0) through folds in lambda to lambda = 1, then polished there (see the header comment).
-// True with (z, plan) set when that converged.
+// True with (z, plan) set when that converged; end: how the followed path ended.
 template <class System>
 inline bool natural_state_around_folds(const System& sys, const homotopy_path<typename System::value_type>& path,
                                        const typename System::vec& z0, typename System::value_type lambda0,
                                        const typename System::plan_type& plan0, typename System::vec& z,
-                                       typename System::plan_type& plan, int& iterations) {
+                                       typename System::plan_type& plan, int& iterations, line_end& end) {
   using T = typename System::value_type;
   using std::fabs;
   T scale = T(1);
@@ -47,6 +47,7 @@ inline bool natural_state_around_folds(const System& sys, const homotopy_path<ty
   copt.stall_window = 200;
   const traced_line<homotopy_system<System>> line = follow_line(hs, z0, lambda0 * scale, plan0, 1, copt);
   iterations += static_cast<int>(line.nodes.size());
+  end = line.end;
   if (line.end != line_end::reached_ft_end) return false;
   typename System::vec zn = line.nodes.back().z;
   auto pn = line.plans.back();
@@ -108,9 +109,16 @@ inline critical_status natural_state_on_path(const System& sys, const homotopy_p
       last = st;
       dl *= T(0.5);
       if (dl < T(1e-5)) {
-        if (natural_state_around_folds(sys, path, z_start, lam_start, plan_start, z, plan, iterations))
+        line_end end = line_end::no_convergence;
+        if (natural_state_around_folds(sys, path, z_start, lam_start, plan_start, z, plan, iterations, end))
           return critical_status::converged;
-        return last == critical_status::unsupported_state ? last : critical_status::not_converged;
+        // The path ran into the edge of the model's forms (an axial load comparable to EA), in the
+        // monotone steps or along the arclength path: the natural state it leads to lies beyond
+        // states the model cannot represent, as for a critical line that ends there (status 3 for
+        // the Ft beyond, gecko/seta/detail/continuation.hpp).
+        if (last == critical_status::unsupported_state || end == line_end::unsupported_state)
+          return critical_status::unsupported_state;
+        return critical_status::not_converged;
       }
     }
   }
