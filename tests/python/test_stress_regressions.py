@@ -5,6 +5,8 @@ kind = verify: the state at Ft is either solved (status 0) and agrees with the i
 shooting route (validation/verify.py) to 1e-8 max(1,|Fn|) in Fn and 1e-8 in beta (where the
 verifier is conclusive), or reported unsolved (status != 0) with NaN Fn and beta.
 kind = bounded_time: the solver must answer (any status) within 20 s.
+kind = natural_unsupported: a design whose every homotopy path to the natural state leaves the
+model's forms: status 3 everywhere, confirmed at Ft by the independent scan of validation/claims.py.
 kind = not_reached: a design whose followed line crawls (step collapse) and used to report the Ft it
 had not reached as status 2 "no critical state" after 10^5 nodes: now status 0 (verified as above)
 or 6 "not reached" (never 2), within 20 s.
@@ -82,6 +84,24 @@ def test_given_up_line_says_not_reached(row):
         cl = campaign.classify(p, np.array([[float(row["Ft"])]]), np.array([[Fn]]), np.array([[beta]]),
                                np.zeros((1, 1), dtype=np.int64), v)
         assert not cl["wrong_fn"].any() and not cl["wrong_beta"].any()
+
+
+@pytest.mark.parametrize("row", [r for r in ROWS if r["kind"] == "natural_unsupported"], ids=lambda r: r["note"][:40])
+def test_natural_state_beyond_the_forms_is_unsupported(row):
+    """Every homotopy path to the natural state runs into the edge of the forms: status 3 at every
+    Ft (it was 1, "not converged"), no line, and the sweep says 3 as well. The claim is checked by
+    the independent scan of validation/claims.py (shooting, no gecko code): no critical state
+    inside the model's forms at Ft = 0."""
+    from validation import claims
+
+    s = gecko.TwoLevelSeta(**_design(row))
+    line = s.critical_line(errors="nan")
+    assert line.end_code == gecko.LineEnd.unsupported_state and len(line.Ft) == 0
+    at = s.critical_line(Ft=[-10.0, 0.0, 10.0], errors="nan")
+    assert list(at.status) == [3, 3, 3] and np.isnan(at.Fn).all()
+    assert s.characteristics().end_code == gecko.LineEnd.unsupported_state
+    p = np.array([_design(row)[k] for k in campaign.FIELDS])
+    assert claims.classify(claims.scan_state(p, float(row["Ft"]))) in ("no_root", "roots_outside_forms")
 
 
 _BETA_REF = os.path.join(HERE, "..", "data", "stress_beta_reference.csv")
