@@ -199,7 +199,7 @@ def new_claims(z, old) -> list:
     return [tuple(map(int, ij)) for ij in np.argwhere(np.isin(st, (2, 3)) & (st != so))]
 
 
-def run(n: int, seed: int = 1, grid: int = 61, npz: str = STATES, progress: bool = False,
+def run(n: int | None, seed: int = 1, grid: int = 61, npz: str = STATES, progress: bool = False,
         since: str = None) -> dict:
     z = np.load(npz)
     P, FT, ST = z["P"], z["FT"], z["status"]
@@ -207,7 +207,7 @@ def run(n: int, seed: int = 1, grid: int = 61, npz: str = STATES, progress: bool
     states = []
     if since:
         picks = new_claims(z, np.load(since))
-        if n is not None and n < len(picks):  # a seeded sample of them (each scan takes minutes)
+        if n is not None and n < len(picks):  # a seeded sample of them (a scan takes seconds to minutes)
             rng = np.random.default_rng(seed)
             picks = [picks[k] for k in sorted(rng.choice(len(picks), size=n, replace=False))]
     else:
