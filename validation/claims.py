@@ -166,7 +166,7 @@ def line_end_check(p, ft: float, status: int) -> str:
     if not len(line.Ft) and status == 3 and line.end_code == gecko.LineEnd.unsupported_state:
         # No line at all: the homotopy to the natural state ran into the edge of the forms, so the
         # line followed from Ft = 0 left them before it started. The root lies on a branch that
-        # does not pass through a natural state inside the forms.
+        # the homotopy from the small-deformation limit does not reach inside the forms.
         return "root_but_no_natural_state"
     if len(line.Ft) and ft < float(np.min(line.Ft)):
         # The trace runs from Ft = 0 towards (Ft)max: a negative Ft below its range is "not
