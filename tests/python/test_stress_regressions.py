@@ -89,7 +89,7 @@ def test_given_up_line_says_not_reached(row):
 @pytest.mark.parametrize("row", [r for r in ROWS if r["kind"] == "natural_unsupported"], ids=lambda r: r["note"][:40])
 def test_natural_state_beyond_the_forms_is_unsupported(row):
     """Every homotopy path to the natural state runs into the edge of the forms: status 3 at every
-    Ft (it was 1, "not converged"), no line, and the sweep says 3 as well. The claim is checked by
+    Ft (it was 1, "not converged"), no line, and the characteristics end there. The claim is checked by
     the independent scan of validation/claims.py (shooting, no gecko code): no critical state
     inside the model's forms at Ft = 0."""
     from validation import claims

@@ -27,12 +27,13 @@ namespace detail {
 
 // The path followed by pseudo-arclength continuation in (z, lambda) from the solved start (z0 at
 // lambda0) through folds in lambda to lambda = 1, then polished there (see the header comment).
-// True with (z, plan) set when that converged; end: how the followed path ended.
+// converged with (z, plan) set; unsupported_state where the path ran into the edge of the model's
+// forms (an axial load comparable to EA); else not_converged.
 template <class System>
-inline bool natural_state_around_folds(const System& sys, const homotopy_path<typename System::value_type>& path,
-                                       const typename System::vec& z0, typename System::value_type lambda0,
-                                       const typename System::plan_type& plan0, typename System::vec& z,
-                                       typename System::plan_type& plan, int& iterations, line_end& end) {
+inline critical_status natural_state_around_folds(const System& sys, const homotopy_path<typename System::value_type>& path,
+                                                  const typename System::vec& z0, typename System::value_type lambda0,
+                                                  const typename System::plan_type& plan0, typename System::vec& z,
+                                                  typename System::plan_type& plan, int& iterations) {
   using T = typename System::value_type;
   using std::fabs;
   T scale = T(1);
@@ -47,17 +48,17 @@ inline bool natural_state_around_folds(const System& sys, const homotopy_path<ty
   copt.stall_window = 200;
   const traced_line<homotopy_system<System>> line = follow_line(hs, z0, lambda0 * scale, plan0, 1, copt);
   iterations += static_cast<int>(line.nodes.size());
-  end = line.end;
-  if (line.end != line_end::reached_ft_end) return false;
+  if (line.end == line_end::unsupported_state) return critical_status::unsupported_state;
+  if (line.end != line_end::reached_ft_end) return critical_status::not_converged;
   typename System::vec zn = line.nodes.back().z;
   auto pn = line.plans.back();
   int its = 0;
   const critical_status st = solve_with_plans(sys, zn, T(0), pn, T(1e-12), 40, its);
   iterations += its;
-  if (st != critical_status::converged) return false;
+  if (st != critical_status::converged) return critical_status::not_converged;
   z = zn;
   plan = pn;
-  return true;
+  return critical_status::converged;
 }
 
 // One homotopy path: monotone steps in lambda, then (where they stall) the arclength follower.
@@ -109,16 +110,13 @@ inline critical_status natural_state_on_path(const System& sys, const homotopy_p
       last = st;
       dl *= T(0.5);
       if (dl < T(1e-5)) {
-        line_end end = line_end::no_convergence;
-        if (natural_state_around_folds(sys, path, z_start, lam_start, plan_start, z, plan, iterations, end))
-          return critical_status::converged;
-        // The path ran into the edge of the model's forms (an axial load comparable to EA), in the
-        // monotone steps or along the arclength path: the natural state it leads to lies beyond
-        // states the model cannot represent, as for a critical line that ends there (status 3 for
-        // the Ft beyond, gecko/seta/detail/continuation.hpp).
-        if (last == critical_status::unsupported_state || end == line_end::unsupported_state)
-          return critical_status::unsupported_state;
-        return critical_status::not_converged;
+        const critical_status around =
+            natural_state_around_folds(sys, path, z_start, lam_start, plan_start, z, plan, iterations);
+        // A path that ran into the edge of the model's forms, in the monotone steps or along the
+        // arclength path, leads to a natural state beyond states the model cannot represent, as
+        // for a critical line that ends there (status 3 for the Ft beyond,
+        // gecko/seta/detail/continuation.hpp).
+        return last == critical_status::unsupported_state && around != critical_status::converged ? last : around;
       }
     }
   }
