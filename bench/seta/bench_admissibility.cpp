@@ -9,29 +9,20 @@
 // (the public admissibility_check also forms those constants, four sincos, on every call; its
 // time is printed too). Median of repetitions. Writes <out>/admissibility.md and .csv.
 //   cmake --build <build> --target bench_admissibility && <build>/bench/seta/bench_admissibility [reps] [--out DIR]
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
-#include <fstream>
-#include <string>
 #include <ctime>
+#include <fstream>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "gecko/seta.hpp"
+#include "harness.hpp"  // bench/harness.hpp: the benchmarks' one timing harness
 
-namespace {
-double thread_cpu_ns() {
-  timespec t;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return 1e9 * static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec);
-}
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-}  // namespace
+using gecko_bench::median;
+using gecko_bench::thread_cpu_ns;
 
 int main(int argc, char** argv) {
   int reps = 21;
@@ -41,7 +32,7 @@ int main(int argc, char** argv) {
     else reps = std::atoi(argv[i]);
   }
   struct row {
-    double alpha2, line, check, pub;
+    double alpha2, line, check, share, pub;  // us/point, us/point, percent of the line, us/point
     int slow, bad;
   };
   std::vector<row> rows;
@@ -79,13 +70,24 @@ int main(int argc, char** argv) {
       t1 = thread_cpu_ns();
       t_public.push_back(t1 - t0);
     }
-    const double line = median(t_line) / 1000, check = median(t_check) / 1000, pub = median(t_public) / 1000;
+    // Medians of whole-line times (ns for 1000 points) in us/point.
+    const double line = median(t_line) / 1e6, check = median(t_check) / 1e6, pub = median(t_public) / 1e6;
+    const row r{alpha2, line, check, 100 * check / line, pub, slow, bad};
     std::printf("alpha2 = %.4f: line %.3f us/point (check included), check alone %.4f us/point = %.2f %% of the "
                 "line (public admissibility_check %.4f us/point); quadrature path on %d of 1000 states, %d "
                 "inadmissible (sink %g)\n",
-                alpha2, line / 1000, check / 1000, 100 * check / line, pub / 1000, slow, bad, sink);
-    rows.push_back({alpha2, line / 1000, check / 1000, pub / 1000, slow, bad});
+                r.alpha2, r.line, r.check, r.share, r.pub, r.slow, r.bad, sink);
+    rows.push_back(r);
   }
+  std::string load = "unknown";  // the 1, 5 and 15 minute load averages
+  {
+    std::ifstream la("/proc/loadavg");
+    std::string l1, l5, l15;
+    if (la >> l1 >> l5 >> l15) load = l1 + " " + l5 + " " + l15;
+  }
+  char when[64];
+  const std::time_t now = std::time(nullptr);
+  std::strftime(when, sizeof when, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
   std::ofstream csv(out_dir + "/admissibility.csv");
   csv << "alpha2,line_us_per_point,check_us_per_point,check_percent_of_line,public_check_us_per_point,"
          "quadrature_states,inadmissible_states\n";
@@ -95,16 +97,18 @@ int main(int argc, char** argv) {
         "Ft = linspace(0, 9.9, 1000), and the same line with alpha2 = 1.0 (states whose theta leaves "
         "[-pi/2, pi/2] need the check's quadrature). Thread CPU time per point, median of "
      << reps << " repetitions: the whole critical_line_at call (which runs the check once per state), and "
-        "the check alone on the same states as the solver calls it (design constants made once).\n\n"
+        "the check alone on the same states as the solver calls it (design constants made once). Run "
+     << when << ", load average at the end " << load
+     << " (a shared machine: compare the check with the line of the same run).\n\n"
         "| alpha2 | line, us/point | check, us/point | check / line | public admissibility_check, us/point "
         "| quadrature states | inadmissible |\n|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const auto& r : rows) {
     char buf[512];
-    std::snprintf(buf, sizeof buf, "%.4f,%.4f,%.4f,%.2f,%.4f,%d,%d\n", r.alpha2, r.line, r.check,
-                  100 * r.check / r.line, r.pub, r.slow, r.bad);
+    std::snprintf(buf, sizeof buf, "%.4f,%.4f,%.4f,%.2f,%.4f,%d,%d\n", r.alpha2, r.line, r.check, r.share,
+                  r.pub, r.slow, r.bad);
     csv << buf;
     std::snprintf(buf, sizeof buf, "| %.4f | %.3f | %.4f | %.1f %% | %.4f | %d of 1000 | %d |\n", r.alpha2, r.line,
-                  r.check, 100 * r.check / r.line, r.pub, r.slow, r.bad);
+                  r.check, r.share, r.pub, r.slow, r.bad);
     md << buf;
   }
 }
