@@ -17,7 +17,8 @@
 //     monotonically from the base to the edge, so min z = 0 at the edge. Theta's range on a
 //     segment is that of its ends plus the turning angles reached inside (the solver's
 //     turning-point counts; the angles from the first integral, eq (8)): without turning points
-//     it costs a few comparisons and one sincos for the strain, with them an atan2 and an asin.
+//     it costs a few comparisons and one sincos for the strain, with them one sincos and one atan2
+//     in all and one asin per segment (the other angles' sines by angle addition).
 //   * Otherwise z is evaluated at every segment end and every point where dz/ds changes sign, by
 //     integrating dz = -(1 + T/EA) cos(theta) dtheta / theta' over the monotone pieces of theta
 //     (split at the turning points theta* where theta' = 0, eq (8)'s first integral
@@ -120,10 +121,11 @@ struct height_segment {
   T sin_phi, cos_phi;
 };
 
+// sin_phi, cos_phi: of the force direction phi (Fn/N and Ft/N, exact to rounding without trigonometry).
 template <class T>
-inline height_segment<T> make_height_segment(T EI, T c, T M, T N, T phi) {
-  using std::asin; using std::cos; using std::sin; using std::sqrt;
-  height_segment<T> g{EI, c, M, N, phi, 0, 0, 0, 0, 0, sin(phi), cos(phi)};
+inline height_segment<T> make_height_segment(T EI, T c, T M, T N, T phi, T sin_phi, T cos_phi) {
+  using std::asin; using std::sqrt;
+  height_segment<T> g{EI, c, M, N, phi, 0, 0, 0, 0, 0, sin_phi, cos_phi};
   const T s = sqrt(1 + 2 * c * M);
   g.b3 = -N * (1 + s) / 2;
   g.b4 = c * N / (1 + s);
@@ -197,8 +199,9 @@ inline void height_gl(const height_segment<T>& g, T a, T b, bool turn_a, bool tu
   const T span = b - a;
   const T sgn = span >= 0 ? T(1) : T(-1);
   const T two_over_EI = 2 / g.EI, cN = g.c * g.N;
-  ds = 0;
-  dz = 0;
+  // Local sums (the outputs are references: accumulating into them directly would store and
+  // reload them at every node).
+  T sum_ds = 0, sum_dz = 0;
   for (int i = 0; i < n; ++i) {
     const T t = t0 + w * q.x[i];
     const T sh = s0 * m.cx[depth][i] + c0 * m.sx[depth][i];   // sin(pi t/2)
@@ -235,9 +238,11 @@ inline void height_gl(const height_segment<T>& g, T a, T b, bool turn_a, bool tu
     if (!(R > 0)) continue;  // only at a turning point itself, where dtheta/dt vanishes too
     const T rate = sqrt(R * two_over_EI);
     const T wt = q.w[i] * w * dth * sgn / rate;  // ds
-    ds += wt;
-    dz -= wt * (1 + cN * u) * cos_th;
+    sum_ds += wt;
+    sum_dz -= wt * (1 + cN * u) * cos_th;
   }
+  ds = sum_ds;
+  dz = sum_dz;
 }
 
 // Adaptive Gauss-Legendre: an interval's 16-point value is accepted when the 12-point rule agrees
@@ -422,90 +427,98 @@ inline bool calibrate_near_saddle(const height_segment<T>& g0, T theta_s, T rate
   return false;
 }
 
-// The range of the axial force T = N sin(theta - phi) over theta in [lo, hi] on one segment: +-N
+// theta's range [lo, hi] on one segment, with u = sin(theta - phi) at both ends (the ends of the
+// range are segment ends or turning angles, where u is known without trigonometry).
+template <class T>
+struct theta_range {
+  T lo, hi, u_lo, u_hi;
+  void track(T th, T u) {
+    if (th < lo) {
+      lo = th;
+      u_lo = u;
+    }
+    if (th > hi) {
+      hi = th;
+      u_hi = u;
+    }
+  }
+};
+
+// The range of the axial force T = N sin(theta - phi) over theta's range on one segment: +-N
 // where the range contains psi = +-pi/2 (mod 2 pi), else the ends.
 template <class T>
-inline void segment_force_range(T N, T phi, T lo, T hi, T& t_min, T& t_max) {
-  using std::ceil; using std::sin;
+inline void segment_force_range(T N, T phi, const theta_range<T>& r, T& t_min, T& t_max) {
+  using std::ceil;
   const T pi = seta_pi<T>();
-  const T a = N * sin(lo - phi), b = N * sin(hi - phi);
+  const T a = N * r.u_lo, b = N * r.u_hi;
   t_min = a < b ? a : b;
   t_max = a < b ? b : a;
-  if (ceil((lo - phi - pi / 2) / (2 * pi)) * 2 * pi + pi / 2 + phi <= hi) t_max = N;
-  if (ceil((lo - phi + pi / 2) / (2 * pi)) * 2 * pi - pi / 2 + phi <= hi) t_min = -N;
+  if (ceil((r.lo - phi - pi / 2) / (2 * pi)) * 2 * pi + pi / 2 + phi <= r.hi) t_max = N;
+  if (ceil((r.lo - phi + pi / 2) / (2 * pi)) * 2 * pi - pi / 2 + phi <= r.hi) t_min = -N;
 }
 
-// The check on design parameters d (1/EA as c1, c2) and a pose; strain_limit: +inf for none.
+// The verdict from a known lowest height r.min_z (NaN: not known) and the largest axial strain.
 template <class T>
-inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const seta_pose<T>& st, T strain_limit) {
+inline admissibility_result<T> finish_admissibility(admissibility_result<T> r, T strain, T z_tol, T strain_limit) {
+  r.max_axial_strain = strain;
+  r.crosses_substrate = r.min_z < -z_tol;
+  r.strain_exceeded = strain > strain_limit;
+  r.admissible = !r.crosses_substrate && !r.strain_exceeded && r.min_z == r.min_z;
+  return r;
+}
+
+// What both paths of the check read from a pose (lengths, the edge, the angles at the joint).
+template <class T>
+struct pose_frame {
+  T L, free2, a_edge;  // l1 + l2, the free spatula length, the edge's s
+  T Fn, Ft, beta, th_j1;  // th_j1 = theta1(l1) = beta - alpha2
+  int n1, n2;             // turning points of the beam and of the spatula
+  T z_tol;                // heights below -z_tol cross the substrate
+};
+
+template <class T>
+inline pose_frame<T> make_pose_frame(const seta_params<T>& d, const seta_pose<T>& st) {
+  pose_frame<T> f;
+  f.L = d.l1 + d.l2;
+  f.free2 = st.free_spatula_length == st.free_spatula_length ? st.free_spatula_length : d.l2;
+  f.a_edge = d.l1 + f.free2;
+  f.Fn = st.Fn;
+  f.Ft = st.Ft;
+  f.beta = st.theta_joint;
+  f.th_j1 = f.beta - d.alpha2;
+  f.n1 = st.turning_points_beam;
+  f.n2 = st.turning_points_spatula;
+  f.z_tol = T(1e-12) * f.L;
+  return f;
+}
+
+// The general path of admissibility_imp (turning points, or theta leaving [-pi/2, pi/2]): kept
+// apart so that admissibility_imp, the common case (theta monotone and within [-pi/2, pi/2]),
+// stays a small function. f: the pose's frame (forces and
+// beta not NaN).
+template <class T>
+inline admissibility_result<T> admissibility_general(const seta_params<T>& d, const seta_pose<T>& st,
+                                                     const pose_frame<T>& f, T strain_limit) {
   using std::atan2; using std::cos; using std::fabs; using std::sin; using std::sqrt;
   admissibility_result<T> r;
   const T half_pi = seta_pi<T>() / 2;
-  const T L = d.l1 + d.l2;
-  const T free2 = st.free_spatula_length == st.free_spatula_length ? st.free_spatula_length : d.l2;
-  const T a_edge = d.l1 + free2;
-  const T Fn = st.Fn, Ft = st.Ft, beta = st.theta_joint;
-  if (!(Fn == Fn) || !(Ft == Ft) || !(beta == beta)) return r;
-  const T th_j1 = beta - d.alpha2;  // theta1(l1)
-  const int n1 = st.turning_points_beam, n2 = st.turning_points_spatula;
-  const T z_tol = T(1e-12) * L;
-  auto finish = [&](T strain) {
-    r.max_axial_strain = strain;
-    r.crosses_substrate = r.min_z < -z_tol;
-    r.strain_exceeded = strain > strain_limit;
-    r.admissible = !r.crosses_substrate && !r.strain_exceeded && r.min_z == r.min_z;
-    return r;
-  };
-  if (n1 == 0 && n2 == 0) {
-    // theta monotone on each segment: its range is that of the ends.
-    const T lo1 = d.alpha1 < th_j1 ? d.alpha1 : th_j1, hi1 = d.alpha1 < th_j1 ? th_j1 : d.alpha1;
-    const T lo2 = beta < half_pi ? beta : half_pi, hi2 = beta < half_pi ? half_pi : beta;
-    if (lo1 >= -half_pi && hi1 <= half_pi && lo2 >= -half_pi && hi2 <= half_pi) {
-      // T's range from T at the ends and T' = Ft cos + Fn sin (T = N sin(psi), T' = N cos(psi)):
-      // an interior extremum where T' changes sign (the ranges are shorter than pi), a maximum N
-      // where T' falls through 0 as theta increases, a minimum -N where it rises.
-      const T N = sqrt(Fn * Fn + Ft * Ft);
-      T t_min = 0, t_max = 0;  // over the extensible segments, scaled by their 1/EA
-      auto seg_range = [&](T c, T th_a, T sa, T ca, T th_b, T sb, T cb) {
-        if (!(c > 0)) return;
-        if (th_b < th_a) {
-          std::swap(sa, sb);
-          std::swap(ca, cb);
-        }
-        const T Ta = Ft * sa - Fn * ca, Tb = Ft * sb - Fn * cb;
-        const T da = Ft * ca + Fn * sa, db = Ft * cb + Fn * sb;
-        T lo = Ta < Tb ? Ta : Tb, hi = Ta < Tb ? Tb : Ta;
-        if (da > 0 && db < 0) hi = N;
-        if (da < 0 && db > 0) lo = -N;
-        if (c * lo < t_min) t_min = c * lo;
-        if (c * hi > t_max) t_max = c * hi;
-      };
-      T sb = 0, cb = 0;
-      if (d.c1 > 0 || d.c2 > 0) {
-        sb = sin(beta);
-        cb = cos(beta);
-      }
-      if (d.c1 > 0) {
-        const T sj = sb * d.co2 - cb * d.s2, cj = cb * d.co2 + sb * d.s2;
-        seg_range(d.c1, d.alpha1, d.s1, d.co1, th_j1, sj, cj);
-      }
-      if (d.c2 > 0) seg_range(d.c2, beta, sb, cb, half_pi, T(1), T(0));
-      // z decreases along s only while the stretch 1 + T/EA is positive (tension, T > 0, never
-      // stops it; a compression of EA or more would).
-      if (t_min > -1) {
-        r.min_z = 0;
-        r.where = a_edge;
-        r.exact_fast_path = true;
-        return finish(t_max > -t_min ? t_max : -t_min);
-      }
-    }
-  }
-  // General path: quadrature of z over the monotone pieces.
+  const T L = f.L, free2 = f.free2, a_edge = f.a_edge, Fn = f.Fn, Ft = f.Ft, beta = f.beta, th_j1 = f.th_j1;
+  const int n1 = f.n1, n2 = f.n2;
+  auto finish = [&](T strain) { return finish_admissibility(r, strain, f.z_tol, strain_limit); };
+  // General path: quadrature of z over the monotone pieces. The sines and cosines of the angles
+  // relative to the force direction phi come from those of beta, alpha1, alpha2 and phi (sin phi =
+  // Fn/N, cos phi = Ft/N) by angle addition: one sincos and one atan2 (phi itself, for the 2 pi
+  // windows of the turning angles) instead of one call per angle.
   const T N = sqrt(Fn * Fn + Ft * Ft);
   if (!(N > 0)) return r;
   const T phi = atan2(Fn, Ft);
+  const T sphi = Fn / N, cphi = Ft / N;
+  const T sb = sin(beta), cb = cos(beta);
+  const T sj = sb * d.co2 - cb * d.s2, cj = cb * d.co2 + sb * d.s2;  // of theta1(l1) = beta - alpha2
+  const T ub = sb * cphi - cb * sphi;                                // sin(beta - phi)
+  const T v = sj * cphi - cj * sphi;                                 // sin(theta1(l1) - phi)
+  const T u_base = d.s1 * cphi - d.co1 * sphi;                       // sin(alpha1 - phi)
   const T p = st.theta_rate_joint, q = st.theta_rate_base;
-  const T ub = sin(beta - phi), v = sin(th_j1 - phi);
   // First integrals (eq (8)): M2 from the joint state, M1 from the beam's end at the joint
   // (EI1 theta1'(l1) = EI2 theta2'(l1), eq (4)), each with the sum of its terms' magnitudes (N
   // included), the scale of its rounding.
@@ -517,46 +530,44 @@ inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const 
   T scale1, scale2;
   const T M2 = first_integral(d.EI2, d.c2, p, ub, scale2);
   const T M1 = first_integral(d.EI1, d.c1, d.EI2 / d.EI1 * p, v, scale1);
-  const auto g1 = make_height_segment(d.EI1, d.c1, M1, N, phi);
-  const auto g2 = make_height_segment(d.EI2, d.c2, M2, N, phi);
+  const auto g1 = make_height_segment(d.EI1, d.c1, M1, N, phi, sphi, cphi);
+  const auto g2 = make_height_segment(d.EI2, d.c2, M2, N, phi, sphi, cphi);
   // theta's range on each segment: its ends and the turning angles reached (n >= 2 turning points
-  // reach both ends of the libration window, one the one theta' runs into first).
-  T lo1 = d.alpha1, hi1 = d.alpha1, lo2 = beta, hi2 = beta;
-  auto track = [&](T& lo, T& hi, T th) {
-    if (th < lo) lo = th;
-    if (th > hi) hi = th;
-  };
-  track(lo1, hi1, th_j1);
-  track(lo2, hi2, half_pi);
-  auto turning_range = [&](const height_segment<T>& g, T th_s, T rate_s, int n, T& lo, T& hi) {
+  // reach both ends of the libration window, one the one theta' runs into first); u = up at both
+  // turning angles (psi_top and -pi - psi_top), cos(phi) at the contact edge (theta = pi/2).
+  theta_range<T> r1{d.alpha1, d.alpha1, u_base, u_base}, r2{beta, beta, ub, ub};
+  r1.track(th_j1, v);
+  r2.track(half_pi, cphi);
+  auto turning_range = [&](const height_segment<T>& g, T th_s, T rate_s, int n, theta_range<T>& rg) {
     using std::floor;
     if (n <= 0 || !(g.up < 1)) return;
     const T pi = seta_pi<T>();
     const T k = floor((th_s - g.phi + pi / 2) / (2 * pi) + T(0.5));
     const T tmax = g.phi + g.psi_top + k * 2 * pi, tmin = g.phi - pi - g.psi_top + k * 2 * pi;
     if (n >= 2) {
-      track(lo, hi, tmax);
-      track(lo, hi, tmin);
+      rg.track(tmax, g.up);
+      rg.track(tmin, g.up);
     } else {
-      track(lo, hi, rate_s > 0 ? tmax : tmin);
+      rg.track(rate_s > 0 ? tmax : tmin, g.up);
     }
   };
-  turning_range(g1, d.alpha1, q, n1, lo1, hi1);
-  turning_range(g2, beta, p, n2, lo2, hi2);
+  turning_range(g1, d.alpha1, q, n1, r1);
+  turning_range(g2, beta, p, n2, r2);
+  const T lo1 = r1.lo, hi1 = r1.hi, lo2 = r2.lo, hi2 = r2.hi;
   // The axial strain T/EA over both segments: its largest magnitude is reported; its lowest value
   // (the largest compression) decides whether the stretch 1 + T/EA stays positive.
   T t_min = 0, t_max = 0;
-  auto strain_range = [&](T c, T lo, T hi) {
+  auto strain_range = [&](T c, const theta_range<T>& rg) {
     if (!(c > 0)) return;
     T a, b;
-    segment_force_range(N, phi, lo, hi, a, b);
+    segment_force_range(N, phi, rg, a, b);
     if (c * a < t_min) t_min = c * a;
     if (c * b > t_max) t_max = c * b;
   };
   // A segment whose theta stays in [-pi/2, pi/2] with a positive stretch has z decreasing along it.
-  strain_range(d.c1, lo1, hi1);
+  strain_range(d.c1, r1);
   const bool beam_monotone = t_min > -1 && lo1 >= -half_pi && hi1 <= half_pi;
-  strain_range(d.c2, lo2, hi2);
+  strain_range(d.c2, r2);
   const T strain = t_max > -t_min ? t_max : -t_min;
   if (beam_monotone && t_min > -1 && lo2 >= -half_pi && hi2 <= half_pi) {  // the spatula too
     // Turning points, but theta stays within [-pi/2, pi/2]: z is monotone all the same.
@@ -613,6 +624,63 @@ inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const 
     r.where = a_edge;
   }
   return finish(strain);
+}
+
+// The check on design parameters d (1/EA as c1, c2) and a pose; strain_limit: +inf for none.
+template <class T>
+inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const seta_pose<T>& st, T strain_limit) {
+  using std::cos; using std::sin; using std::sqrt;
+  admissibility_result<T> r;
+  const pose_frame<T> f = make_pose_frame(d, st);
+  if (!(f.Fn == f.Fn) || !(f.Ft == f.Ft) || !(f.beta == f.beta)) return r;
+  const T half_pi = seta_pi<T>() / 2;
+  const T Fn = f.Fn, Ft = f.Ft, beta = f.beta, th_j1 = f.th_j1;
+  auto finish = [&](T strain) { return finish_admissibility(r, strain, f.z_tol, strain_limit); };
+  if (f.n1 == 0 && f.n2 == 0) {
+    // theta monotone on each segment: its range is that of the ends.
+    const T lo1 = d.alpha1 < th_j1 ? d.alpha1 : th_j1, hi1 = d.alpha1 < th_j1 ? th_j1 : d.alpha1;
+    const T lo2 = beta < half_pi ? beta : half_pi, hi2 = beta < half_pi ? half_pi : beta;
+    if (lo1 >= -half_pi && hi1 <= half_pi && lo2 >= -half_pi && hi2 <= half_pi) {
+      // T's range from T at the ends and T' = Ft cos + Fn sin (T = N sin(psi), T' = N cos(psi)):
+      // an interior extremum where T' changes sign (the ranges are shorter than pi), a maximum N
+      // where T' falls through 0 as theta increases, a minimum -N where it rises.
+      const T N = sqrt(Fn * Fn + Ft * Ft);
+      T t_min = 0, t_max = 0;  // over the extensible segments, scaled by their 1/EA
+      auto seg_range = [&](T c, T th_a, T sa, T ca, T th_b, T sb, T cb) {
+        if (!(c > 0)) return;
+        if (th_b < th_a) {
+          std::swap(sa, sb);
+          std::swap(ca, cb);
+        }
+        const T Ta = Ft * sa - Fn * ca, Tb = Ft * sb - Fn * cb;
+        const T da = Ft * ca + Fn * sa, db = Ft * cb + Fn * sb;
+        T lo = Ta < Tb ? Ta : Tb, hi = Ta < Tb ? Tb : Ta;
+        if (da > 0 && db < 0) hi = N;
+        if (da < 0 && db > 0) lo = -N;
+        if (c * lo < t_min) t_min = c * lo;
+        if (c * hi > t_max) t_max = c * hi;
+      };
+      T sb = 0, cb = 0;
+      if (d.c1 > 0 || d.c2 > 0) {
+        sb = sin(beta);
+        cb = cos(beta);
+      }
+      if (d.c1 > 0) {
+        const T sj = sb * d.co2 - cb * d.s2, cj = cb * d.co2 + sb * d.s2;
+        seg_range(d.c1, d.alpha1, d.s1, d.co1, th_j1, sj, cj);
+      }
+      if (d.c2 > 0) seg_range(d.c2, beta, sb, cb, half_pi, T(1), T(0));
+      // z decreases along s only while the stretch 1 + T/EA is positive (tension, T > 0, never
+      // stops it; a compression of EA or more would).
+      if (t_min > -1) {
+        r.min_z = 0;
+        r.where = f.a_edge;
+        r.exact_fast_path = true;
+        return finish(t_max > -t_min ? t_max : -t_min);
+      }
+    }
+  }
+  return admissibility_general(d, st, f, strain_limit);
 }
 
 }  // namespace detail
