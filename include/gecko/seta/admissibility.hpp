@@ -121,16 +121,27 @@ struct height_segment {
   T sin_phi, cos_phi;
 };
 
-// sin_phi, cos_phi: of the force direction phi (Fn/N and Ft/N, exact to rounding without trigonometry).
+// psi_top = asin(up) of a libration (pi/2 for a rotation); NaN until set.
 template <class T>
-inline height_segment<T> make_height_segment(T EI, T c, T M, T N, T phi, T sin_phi, T cos_phi) {
-  using std::asin; using std::sqrt;
+inline void set_turning_angle(height_segment<T>& g) {
+  using std::asin;
+  if (!(g.psi_top == g.psi_top)) g.psi_top = g.up < 1 ? asin(g.up) : seta_pi<T>() / 2;
+}
+
+// sin_phi, cos_phi: of the force direction phi (Fn/N and Ft/N, exact to rounding without trigonometry).
+// turning_angle: set psi_top now (else NaN: set_turning_angle before the segment is walked; a
+// segment without turning points whose theta stays within [-pi/2, pi/2] never needs it).
+template <class T>
+inline height_segment<T> make_height_segment(T EI, T c, T M, T N, T phi, T sin_phi, T cos_phi,
+                                             bool turning_angle = true) {
+  using std::sqrt;
   height_segment<T> g{EI, c, M, N, phi, 0, 0, 0, 0, 0, sin_phi, cos_phi};
   const T s = sqrt(1 + 2 * c * M);
   g.b3 = -N * (1 + s) / 2;
   g.b4 = c * N / (1 + s);
   g.up = 2 * M / (N * (1 + s));
-  g.psi_top = g.up < 1 ? asin(g.up) : seta_pi<T>() / 2;
+  g.psi_top = std::numeric_limits<T>::quiet_NaN();
+  if (turning_angle) set_turning_angle(g);
   g.cos_top = g.up < 1 ? sqrt((1 - g.up) * (1 + g.up)) : T(0);
   return g;
 }
@@ -494,8 +505,7 @@ inline pose_frame<T> make_pose_frame(const seta_params<T>& d, const seta_pose<T>
 
 // The general path of admissibility_imp (turning points, or theta leaving [-pi/2, pi/2]): kept
 // apart so that admissibility_imp, the common case (theta monotone and within [-pi/2, pi/2]),
-// stays a small function. f: the pose's frame (forces and
-// beta not NaN).
+// stays a small function. f: the pose's frame (forces and beta not NaN).
 template <class T>
 inline admissibility_result<T> admissibility_general(const seta_params<T>& d, const seta_pose<T>& st,
                                                      const pose_frame<T>& f, T strain_limit) {
@@ -530,8 +540,9 @@ inline admissibility_result<T> admissibility_general(const seta_params<T>& d, co
   T scale1, scale2;
   const T M2 = first_integral(d.EI2, d.c2, p, ub, scale2);
   const T M1 = first_integral(d.EI1, d.c1, d.EI2 / d.EI1 * p, v, scale1);
-  const auto g1 = make_height_segment(d.EI1, d.c1, M1, N, phi, sphi, cphi);
-  const auto g2 = make_height_segment(d.EI2, d.c2, M2, N, phi, sphi, cphi);
+  // The turning angles (an asin each) only where theta turns; the walks below set the others.
+  auto g1 = make_height_segment(d.EI1, d.c1, M1, N, phi, sphi, cphi, n1 > 0);
+  auto g2 = make_height_segment(d.EI2, d.c2, M2, N, phi, sphi, cphi, n2 > 0);
   // theta's range on each segment: its ends and the turning angles reached (n >= 2 turning points
   // reach both ends of the libration window, one the one theta' runs into first); u = up at both
   // turning angles (psi_top and -pi - psi_top), cos(phi) at the contact edge (theta = pi/2).
@@ -595,8 +606,10 @@ inline admissibility_result<T> admissibility_general(const seta_params<T>& d, co
     w1.ok = true;
     w1.length = d.l1;
   } else {
+    set_turning_angle(g1);
     w1 = walk(g1, d.alpha1, q, th_j1, n1, d.l1, m_tol1);
   }
+  set_turning_angle(g2);
   const segment_walk<T> w2 = walk(g2, beta, p, half_pi, n2, free2, m_tol2);
   const bool ok = w1.ok && w2.ok;
   if (!ok) {
