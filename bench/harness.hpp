@@ -18,8 +18,9 @@
 // over repetitions and the interleaving are for. Wall time (steady_clock) is there for the
 // multithreaded batch calls, whose work is spread over threads.
 //
-// Also here: csv_text, the one CSV quoting of the benchmarks that write result tables, and
-// row/write, the family-method-setting-time-error table of the friction benchmarks.
+// Also here: load_average and utc_now, the record of a run in every results file; csv_text, the
+// one CSV quoting of the benchmarks that write result tables; and row/write, the
+// family-method-setting-time-error table of the friction benchmarks.
 #pragma once
 
 #include <algorithm>
@@ -29,6 +30,7 @@
 #include <cstdio>
 #include <exception>
 #include <ctime>
+#include <fstream>
 #include <limits>
 #include <string>
 #include <vector>
@@ -173,6 +175,25 @@ inline double time_cases(std::vector<timed_case>& cases, int reps, double target
     c.result.min_ns = *std::min_element(c.samples_ns.begin(), c.samples_ns.end());
   }
   return checksum;
+}
+
+// ---- the record of a run -----------------------------------------------------------------------
+
+// The 1, 5 and 15 minute load averages ("unknown" where /proc/loadavg cannot be read): results
+// files note them because the machines are shared.
+inline std::string load_average() {
+  std::ifstream in("/proc/loadavg");
+  std::string a, b, c;
+  if (!(in >> a >> b >> c)) return "unknown";
+  return a + " " + b + " " + c;
+}
+
+// The current time as "YYYY-MM-DD HH:MM UTC".
+inline std::string utc_now() {
+  const std::time_t t = std::time(nullptr);
+  char buf[64];
+  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M UTC", std::gmtime(&t));
+  return buf;
 }
 
 // A CSV text field: always quoted (R_F(x,y,z) and the input-set names contain commas), a quote

@@ -187,20 +187,6 @@ std::string cpu_model() {
   return model + " (" + std::to_string(count) + " logical CPUs)";
 }
 
-std::string load_average() {
-  std::ifstream in("/proc/loadavg");
-  std::string a, b, c;
-  in >> a >> b >> c;
-  return a + " " + b + " " + c;
-}
-
-std::string utc_now() {
-  const std::time_t t = std::time(nullptr);
-  char buf[64];
-  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M UTC", std::gmtime(&t));
-  return buf;
-}
-
 // Markdown table cells: a literal '|' (as in F(phi|m)) must be escaped.
 std::string md_cell(const std::string& s) {
   std::string out;

@@ -255,16 +255,14 @@ int run(int argc, char** argv) {
   std::vector<timed_case> cases;
   for (const auto& s : sets)
     for (const auto& mth : methods) cases.push_back(timed_case{mth.fn, &s, s.phi.size(), {}, 1, {}, {}});
-  std::ifstream load_in("/proc/loadavg");
-  std::string l1, l5, l15;
-  load_in >> l1 >> l5 >> l15;
+  const std::string load = load_average();
   const double checksum = time_cases(cases, reps, target_ms);
   std::printf("# Scalar F profile: stage costs and kernel restructurings (issue 16, item 3)\n\n"
               "Made by `profile_ellint_f --reps %d` (bench/elliptic/profile_ellint_f.cpp, target of "
-              "-DGECKO_BUILD_BENCHMARKS=ON); %d repetitions, load average at start %s %s %s; flags %s. "
+              "-DGECKO_BUILD_BENCHMARKS=ON); %d repetitions, load average at start %s; flags %s. "
               "Thread CPU time, medians of interleaved repetitions: compare ratios within this run. "
               "Stage rows are not F (their values are wrong); they show what the stage removed costs.\n\n",
-              reps, reps, l1.c_str(), l5.c_str(), l15.c_str(), GECKO_BENCH_CXX_FLAGS);
+              reps, reps, load.c_str(), GECKO_BENCH_CXX_FLAGS);
   std::printf("| input set | variant | median ns | q1-q3 ns | vs gecko::ellint_f | Boost / this | max err (eps) |\n");
   std::printf("|---|---|---|---|---|---|---|\n");
   std::size_t idx = 0;

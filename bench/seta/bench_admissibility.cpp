@@ -12,7 +12,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <ctime>
 #include <fstream>
 #include <limits>
 #include <string>
@@ -79,15 +78,7 @@ int main(int argc, char** argv) {
                 r.alpha2, r.line, r.check, r.share, r.pub, r.slow, r.bad, sink);
     rows.push_back(r);
   }
-  std::string load = "unknown";  // the 1, 5 and 15 minute load averages
-  {
-    std::ifstream la("/proc/loadavg");
-    std::string l1, l5, l15;
-    if (la >> l1 >> l5 >> l15) load = l1 + " " + l5 + " " + l15;
-  }
-  char when[64];
-  const std::time_t now = std::time(nullptr);
-  std::strftime(when, sizeof when, "%Y-%m-%d %H:%M UTC", std::gmtime(&now));
+  const std::string load = gecko_bench::load_average(), when = gecko_bench::utc_now();
   std::ofstream csv(out_dir + "/admissibility.csv");
   csv << "alpha2,line_us_per_point,check_us_per_point,check_percent_of_line,public_check_us_per_point,"
          "quadrature_states,inadmissible_states\n";

@@ -266,12 +266,7 @@ int main(int argc, char** argv) {
   std::printf("batch: %d designs x 20 Ft: %.0f designs/s (1 thread), %.0f designs/s (2 threads), identical %d\n",
               nd, dps1, dps2, identical);
 
-  // Load average, for the record.
-  std::string load;
-  {
-    std::ifstream la("/proc/loadavg");
-    std::getline(la, load);
-  }
+  const std::string load = gecko_bench::load_average();  // for the record
   std::ofstream csv(out_dir + "/seta.csv");
   csv << "method,setting,us_per_point,max_rel_err_Fn,failed_points\n";
   for (const auto& r : rows) csv << r.method << "," << r.setting << "," << r.us_per_point << "," << r.max_err << "," << r.failed << "\n";
