@@ -17,15 +17,17 @@ the backward shot from the contact edge (theta2 = pi/2, theta2' = +sqrt(2 (w - F
 across the joint to the base (paper 001 eqs 2-5, 15). R is sampled on a grid of Fn over a wide
 range (sinh-spaced, dense near 0, out to +-S with S = 10 max(|Ft|, F, EI1/l1^2, w), F the
 campaign's Ft scale), each sign change with both signs above the shot's own error estimate is
-refined by bisection (30 halvings), and every root is classified by the model's forms at that state (b4 < 1 and
+refined by bisection (30 halvings) and kept as a root only where |R| at the bracket's ends falls
+as the bracket shrinks (a sign change across a jump of the shot, its beta switching branch, is
+recorded apart as a jump, one the shot's accuracy cannot resolve as unresolved), and every root is classified by the model's forms at that state (b4 < 1 and
 1 + 2 c M > 0 for beam and spatula, with M from the first integrals, eqs 8 and 12: the spatula's
 M2 = Ft + w, the beam's from the joint conditions, eq 4). Only theta1(0) = alpha1 itself is a
 root (not alpha1 + 2 pi k: the solver's shortest-path convention).
 
 Per state:
 
-* ``no_root``: no sign change of R in the scanned range: the claim is confirmed (there is no
-  critical state at this Ft at all, in that range).
+* ``no_root``: no root of R in the scanned range (no sign change, or only jumps): the claim is
+  confirmed (there is no critical state at this Ft at all, in that range).
 * ``roots_outside_forms``: every root leaves the model's forms: the claim is confirmed (no state
   the model can represent).
 * ``root_in_forms``: a root inside the forms exists. A scan at one Ft cannot say whether it lies
@@ -38,11 +40,13 @@ Per state:
   ``contradicted``: the solver should have found the state. ``root_below_traced_range``: Ft < 0
   below every traced node (the trace runs from Ft = 0 towards (Ft)max): the claim "not reached"
   holds by construction, but a critical state exists there.
-* ``undecided``: some grid signs are below the shot's error estimate (stiff shots at large |Fn|).
+* ``undecided``: some grid signs are below the shot's error estimate, or a sign change could not
+  be resolved as a root or a jump (stiff shots at large |Fn|).
 
     python3 -m validation.claims --sample 40 [--seed 1] [--grid 61] [--json validation/results/claims.json]
     python3 -m validation.claims --npz NEW.npz --since OLD.npz --json F.json   (every new claim)
     python3 -m validation.claims --npz NEW.npz --since OLD.npz --sample 12 --json F.json  (12 of them)
+    python3 -m validation.claims --redo F.json --json G.json  (the states of an earlier results file again)
 """
 from __future__ import annotations
 
@@ -120,39 +124,92 @@ def forms(p, ft: float, fn: float, beta: float) -> dict:
     return out
 
 
+SHRINK_STAGE = 5          # halvings per stage of the root test (the last two stages are tested)
+SHRINK_PER_STAGE = 2.0 ** -1.5  # |R| ~ |Fn - root|^a falls by 2^(-5 a) per stage: a >= 0.3 passes
+
+
+def refine(shoot, lo, hi, r_lo, r_hi, bisections: int = 30):
+    """Bisect sign-change brackets [lo, hi] of R (values r_lo, r_hi there; arrays) and tell roots
+    from sign changes that are not roots.
+
+    ``shoot(x)`` returns (R, beta, err) at the points x. Bisection converges to a sign change
+    whether R passes through 0 there or jumps across it (the shot's beta switching branch), and
+    it follows the shot's noise where the shot is not accurate. What tells them apart is the
+    spread |R(lo)| + |R(hi)| at the bracket's ends: at a root it falls with the bracket's width
+    (by 2^-5 per five halvings at a simple root, by 2^(-5 a) where |R| ~ |Fn - root|^a); across a
+    jump it settles at the jump; in noise it wanders. Kinds, from the spreads s20, s25, s30 after
+    bisections - 10, - 5 and all halvings:
+
+    * ``root``: the spread fell by SHRINK_PER_STAGE in each of the last two stages, or it is within
+      ten times the shot's error estimate at the midpoint (a root resolved to the shot's noise);
+    * ``jump``: not a root, and R at each end moved by less than 1 % of s30 (plus ten error
+      estimates) over the last ten halvings (R settled on the limits of both sides);
+    * ``unresolved``: neither (the shot is not accurate enough there to say).
+
+    Returns the midpoints x, R, beta and err there, the final spread and the kinds (an array of
+    strings).
+    """
+    lo, hi = np.array(lo, float), np.array(hi, float)
+    r_lo, r_hi = np.array(r_lo, float), np.array(r_hi, float)
+    spreads, ends20 = {}, (r_lo, r_hi)
+    for k in range(bisections + 1):
+        left = bisections - k
+        if left in (2 * SHRINK_STAGE, SHRINK_STAGE, 0):
+            spreads[left] = np.abs(r_lo) + np.abs(r_hi)
+        if left == 2 * SHRINK_STAGE:
+            ends20 = (r_lo, r_hi)
+        if left == 0:
+            break
+        mid = 0.5 * (lo + hi)
+        rm, _, _ = shoot(mid)
+        same = np.sign(rm) == np.sign(r_lo)
+        lo, r_lo = np.where(same, mid, lo), np.where(same, rm, r_lo)
+        hi, r_hi = np.where(same, hi, mid), np.where(same, r_hi, rm)
+    s20 = spreads.get(2 * SHRINK_STAGE, spreads[0])
+    s25 = spreads.get(SHRINK_STAGE, spreads[0])
+    s30 = spreads[0]
+    x = 0.5 * (lo + hi)
+    rx, bx, ex = shoot(x)
+    falls = (s25 <= SHRINK_PER_STAGE * s20) & (s30 <= SHRINK_PER_STAGE * s25)
+    is_root = falls | (s30 <= 10.0 * ex)  # the second: both ends at the shot's noise
+    # a jump: R at each end settled on its side's limit over the last ten halvings
+    moved = np.abs(r_lo - ends20[0]) + np.abs(r_hi - ends20[1])
+    settled = moved <= 0.01 * s30 + 10.0 * ex
+    kind = np.where(is_root, "root", np.where(settled, "jump", "unresolved"))
+    return x, rx, bx, ex, s30, kind
+
+
 def scan_state(p, ft: float, grid: int = 61, bisections: int = 30) -> dict:
-    """The scan of one state (design p, Ft): grid signs, refined roots, their forms."""
+    """The scan of one state (design p, Ft): grid signs, refined roots and their forms, and the
+    sign changes that are jumps of the shot or that its accuracy cannot resolve (see ``refine``)."""
     S = scan_range(p, ft)
     fn = fn_grid(S, grid)
     R, _, er = _shoot(p, ft, fn)
     reliable = np.isfinite(R) & (np.abs(R) > er)
     sign = np.where(reliable, np.sign(R), 0.0)
-    brackets = [(fn[k], fn[k + 1], sign[k]) for k in range(grid - 1)
-                if sign[k] != 0 and sign[k + 1] != 0 and sign[k] != sign[k + 1]]
-    roots = []
-    if brackets:
-        lo = np.array([b[0] for b in brackets])
-        hi = np.array([b[1] for b in brackets])
-        s_lo = np.array([b[2] for b in brackets])
-        for _ in range(bisections):
-            mid = 0.5 * (lo + hi)
-            Rm, _, _ = _shoot(p, ft, mid)
-            same = np.sign(Rm) == s_lo
-            lo = np.where(same, mid, lo)
-            hi = np.where(same, hi, mid)
-        x = 0.5 * (lo + hi)
-        Rx, bx, ex = _shoot(p, ft, x)
+    ks = [k for k in range(grid - 1) if sign[k] != 0 and sign[k + 1] != 0 and sign[k] != sign[k + 1]]
+    roots, jumps, unresolved = [], [], []
+    if ks:
+        ks = np.array(ks)
+        x, Rx, bx, ex, spread, kind = refine(lambda v: _shoot(p, ft, v), fn[ks], fn[ks + 1], R[ks], R[ks + 1],
+                                             bisections)
         for k in range(x.size):
+            entry = {"Fn": float(x[k]), "beta": float(bx[k]), "R": float(Rx[k]), "R_err": float(ex[k]),
+                     "bracket_R": float(spread[k])}
+            if kind[k] != "root":
+                (jumps if kind[k] == "jump" else unresolved).append(entry)
+                continue
             f = forms(p, ft, float(x[k]), float(bx[k]))
-            roots.append({"Fn": float(x[k]), "beta": float(bx[k]), "R": float(Rx[k]), "R_err": float(ex[k]),
-                          "in_forms": f["in_forms"], "b4_beam": f["beam"]["b4"], "b4_spatula": f["spatula"]["b4"]})
-    return {"S": S, "grid": grid, "unreliable_nodes": int((~reliable).sum()), "roots": roots}
+            roots.append({**entry, "in_forms": f["in_forms"], "b4_beam": f["beam"]["b4"],
+                          "b4_spatula": f["spatula"]["b4"]})
+    return {"S": S, "grid": grid, "unreliable_nodes": int((~reliable).sum()), "roots": roots, "jumps": jumps,
+            "unresolved": unresolved}
 
 
 def classify(scan: dict) -> str:
     if any(r["in_forms"] for r in scan["roots"]):
         return "root_in_forms"
-    if scan["unreliable_nodes"]:
+    if scan["unreliable_nodes"] or scan["unresolved"]:
         return "undecided"
     return "roots_outside_forms" if scan["roots"] else "no_root"
 
@@ -199,13 +256,29 @@ def new_claims(z, old) -> list:
     return [tuple(map(int, ij)) for ij in np.argwhere(np.isin(st, (2, 3)) & (st != so))]
 
 
+def redo_claims(z, path: str) -> tuple:
+    """The (design, column) pairs of an earlier results file, checked against ``z``: the same
+    states scanned again (after a change to the scan) without the files that picked them."""
+    with open(path) as f:
+        old = json.load(f)
+    picks = [(int(s["design"]), int(s["column"])) for s in old["states"]]
+    for (i, j), s in zip(picks, old["states"]):
+        if float(z["FT"][i, j]) != float(s["Ft"]):
+            raise SystemExit(f"--redo: design {i} column {j} has Ft {float(z['FT'][i, j])!r} here, "
+                             f"{s['Ft']!r} in {path}")
+    return picks, [int(s["status"]) for s in old["states"]]
+
+
 def run(n: int | None, seed: int = 1, grid: int = 61, npz: str = STATES, progress: bool = False,
-        since: str = None) -> dict:
+        since: str = None, redo: str = None) -> dict:
     z = np.load(npz)
     P, FT, ST = z["P"], z["FT"], z["status"]
     t0 = time.time()
     states = []
-    if since:
+    statuses = None
+    if redo:
+        picks, statuses = redo_claims(z, redo)
+    elif since:
         picks = new_claims(z, np.load(since))
         if n is not None and n < len(picks):  # a seeded sample of them (a scan takes seconds to minutes)
             rng = np.random.default_rng(seed)
@@ -214,22 +287,26 @@ def run(n: int | None, seed: int = 1, grid: int = 61, npz: str = STATES, progres
         picks = sample_claims(z, 40 if n is None else n, seed)
     n = len(picks)
     for k, (i, j) in enumerate(picks):
-        p, ft, status = P[i], float(FT[i, j]), int(ST[i, j])
+        # --redo keeps the status the earlier file scanned (another solver's, for --since files)
+        p, ft, status = P[i], float(FT[i, j]), int(ST[i, j]) if statuses is None else statuses[k]
         sc = scan_state(p, ft, grid)
         verdict = classify(sc)
         if verdict == "root_in_forms":
             verdict = line_end_check(p, ft, status)
         states.append({"design": i, "column": j, "Ft": ft, "status": status, "verdict": verdict, **sc})
         if progress:
-            print(f"{k + 1}/{n}: design {i} Ft {ft:.6g} status {status}: {verdict} ({len(sc['roots'])} roots)",
+            print(f"{k + 1}/{n}: design {i} Ft {ft:.6g} status {status}: {verdict} ({len(sc['roots'])} roots, "
+                  f"{len(sc['jumps'])} jumps, {len(sc['unresolved'])} unresolved)",
                   flush=True)
     counts = {}
     for s in states:
         key = f"status_{s['status']}"
         counts.setdefault(key, {})
         counts[key][s["verdict"]] = counts[key].get(s["verdict"], 0) + 1
-    return {"sample": len(states), "seed": seed, "grid": grid, "seconds": round(time.time() - t0, 1),
-            "counts": counts, "states": states}
+    out = {"sample": len(states), "seed": seed, "grid": grid, "seconds": round(time.time() - t0, 1)}
+    if redo:
+        out["redo_of"] = os.path.relpath(redo)  # the states were picked by that file's run
+    return {**out, "counts": counts, "states": states}
 
 
 def main(argv=None):
@@ -244,8 +321,11 @@ def main(argv=None):
     ap.add_argument("--since", default=None, metavar="OLD.npz",
                     help="check the states whose status became 2 or 3 since OLD.npz (both from "
                          "validation.recheck --save): all of them, or --sample N of them")
+    ap.add_argument("--redo", default=None, metavar="EARLIER.json",
+                    help="scan the states of an earlier results file again, with their statuses "
+                         "from that file (designs and Ft from --npz)")
     args = ap.parse_args(argv)
-    res = run(args.sample, args.seed, args.grid, args.npz, progress=True, since=args.since)
+    res = run(args.sample, args.seed, args.grid, args.npz, progress=True, since=args.since, redo=args.redo)
     print(json.dumps(res["counts"], indent=1))
     with open(args.json, "w") as f:
         json.dump(res, f, indent=1, allow_nan=True)

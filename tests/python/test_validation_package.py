@@ -55,6 +55,71 @@ def test_claims_scan_finds_a_known_root_and_confirms_two_campaign_claims():
         assert claims.classify(sc) == "no_root", (i, j, sc["roots"])
 
 
+def test_claims_refine_tells_roots_from_jumps_and_noise():
+    # validation/claims.py: bisection converges to a sign change whether R passes through 0, jumps
+    # across it, or is noise of an inaccurate shot; only the first is a root. Synthetic R: a
+    # square-root-like root at -0.2 (|R| falls slowly), a simple root at 0.3, a jump at 0.7, a root
+    # at 1.5 whose |R| sits at the shot's noise, and noise of amplitude 1 around 2.5 with an error
+    # estimate far below it (as a stiff shot's can be).
+    from validation import claims
+
+    def shoot(x):
+        x = np.asarray(x, float)
+        noise = np.where(x <= 2.2, -1.0, np.where(x >= 2.8, 1.0, np.sin(1e15 * x)))  # new at every few ulp
+        r = np.select([x < 0.0, x < 0.5, x < 1.0, x < 2.0],
+                      [np.sign(x + 0.2) * np.sqrt(np.abs(x + 0.2)), 2.0 * (x - 0.3), np.where(x < 0.7, -0.4, 0.3),
+                       np.where(x < 1.5, -1e-13, 1e-13)], default=noise)
+        return r, np.zeros_like(x), np.full(x.shape, 1e-13)
+
+    lo, hi = np.array([-0.45, 0.1, 0.6, 1.2, 2.2]), np.array([-0.05, 0.45, 0.9, 1.8, 2.8])
+    r_lo, r_hi = shoot(lo)[0], shoot(hi)[0]
+    assert np.all(r_lo * r_hi < 0)
+    x, rx, _, _, spread, kind = claims.refine(shoot, lo, hi, r_lo, r_hi, bisections=30)
+    np.testing.assert_allclose(x[:4], [-0.2, 0.3, 0.7, 1.5], atol=1e-9)
+    assert list(kind) == ["root", "root", "jump", "root", "unresolved"], (list(kind), spread)
+    assert abs(spread[2] - 0.7) < 1e-15  # across the jump |R| does not fall at all
+    # the state's verdict: a jump is no root; an unresolved sign change leaves it undecided
+    scan = {"unreliable_nodes": 0, "roots": [], "jumps": [{}], "unresolved": []}
+    assert claims.classify(scan) == "no_root"
+    assert claims.classify({**scan, "unresolved": [{}]}) == "undecided"
+
+
+def test_line_ends_first_integrals_match_the_solved_rates():
+    # validation/line_ends.py measures each segment's distance from its separatrix through the
+    # first integrals' constants M (the spatula's from Griffith's condition, the beam's from the
+    # joint); on solved states R(u) must equal EI/2 theta'^2 at the segment's other end too.
+    import math
+    from validation import campaign, line_ends
+    s = gecko.TwoLevelSeta()
+    d = {f: float(getattr(s, f)) for f in campaign.FIELDS}
+    line = s.critical_line(Ft=np.linspace(0.0, 9.5, 8))
+    assert np.all(line.status == 0)
+    q = line_ends.node_quantities(line, d)
+    N, phi = np.hypot(line.Fn, line.Ft), np.arctan2(line.Fn, line.Ft)
+    c2 = 1.0 / d["EA2"]
+    # spatula: R(1) from the separatrix distance, R(u) at the joint from the joint rate
+    M2 = line.Ft + d["w"]
+    u = np.sin(line.theta_joint - phi)
+    np.testing.assert_allclose(M2 - N * u - c2 * N * N * u * u / 2, d["EI2"] / 2 * line.theta_rate_joint ** 2,
+                               rtol=1e-9, atol=1e-9)
+    # beam (inextensible here): M1 from the joint (moment continuity, eq 4), checked at the base
+    k1 = d["EI2"] / d["EI1"] * line.theta_rate_joint
+    v = np.sin(line.theta_joint - d["alpha2"] - phi)
+    M1 = d["EI1"] / 2 * k1 ** 2 + N * v
+    u0 = np.sin(d["alpha1"] - phi)
+    np.testing.assert_allclose(M1 - N * u0, d["EI1"] / 2 * line.theta_rate_base ** 2, rtol=1e-9, atol=1e-9)
+    np.testing.assert_allclose(q["beam_separatrix"], (M1 - N) / (np.abs(M1) + N), rtol=1e-12)
+    # the reference line crosses both separatrices between Ft = 4 and 8 (the distances change sign)
+    # and is solved on both sides: crossing one is not what makes a line give up
+    for key in ("spatula_separatrix", "beam_separatrix"):
+        assert q[key][0] > 1e-3 and q[key][-1] < -1e-3, q[key]
+    node = {k: float(v[0]) for k, v in q.items()}
+    assert line_ends.mechanism("stalled", node) == "other"
+    assert line_ends.mechanism("stalled", {**node, "beam_separatrix": 1e-11}) == "beam_separatrix"
+    assert line_ends.mechanism("reached_ft_end", {**node, "beam_separatrix": 1e-11}) == "now_reached"
+    assert math.isfinite(node["spatula_elastic_lengths"])
+
+
 def test_hermite_minimum_is_exact_for_a_cubic():
     from validation import verify
     # z(t) = (t - 0.3)^2 (t + 1) - 0.05 on [0, 1]: minimum at t = 0.3 (z = -0.05), inside the step

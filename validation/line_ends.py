@@ -1,0 +1,197 @@
+#!/usr/bin/env python3
+"""Where and why the followed critical line stops short: the give-ups of issue 13, item 5.
+
+A state is ``not_reached`` (status 6) when the line followed from Ft = 0 stopped before its Ft
+without ending: the corrector failed at the smallest step (``LineEnd.no_convergence``), the step
+collapsed (``LineEnd.stalled``: 1000 attempts advanced less than 1 % of the force scale), or the
+point budget ran out (``LineEnd.max_points``). This takes a seeded sample of the designs of the
+stress campaign's states (validation/data/stress_10000_states.npz) that have a status-6 state,
+re-traces each line as the solver on PYTHONPATH does for those states (from Ft = 0 to the largest
+requested Ft of the design, raw continuation nodes), and describes the last node, where the line
+stopped, by the quantities that make the equations singular there (paper 001 eqs 2-5, 12, 15):
+
+* each segment's distance from its separatrix, R(1) / (|M| + N): with the first integral
+  EI/2 theta'^2 = R(u) = M - N u - c N^2 u^2 / 2, u = sin(theta - phi), phi = atan2(Fn, Ft)
+  (eqs 8, 12; the beam's M from the joint, eq 4), R(1) = 0 is the orbit through the saddle (theta'
+  = 0 with the segment aligned with the force), between libration and rotation. There a
+  libration's period diverges (logarithmically in the distance), the solver's forms for the
+  segment's length switch between the libration and the rotation kind, and the length equation's
+  derivatives grow without bound; a path that runs close to the saddle has a length ~ log of the
+  distance. Each segment's length in elastic lengths, l sqrt(N / EI), is reported beside it;
+* the joint rate theta2'(l1) and the base rate theta1'(0), each relative to sqrt(2 w / EI) of its
+  segment: 0 is a turning point on the segment's end, where its phase plan changes;
+* 1 - u at the joint.
+
+Mechanism per design (thresholds on the last node, in this order):
+
+* ``spatula_separatrix``, ``beam_separatrix``: that segment within 1e-3 of its separatrix (the
+  distances are reported in decades: most are far closer);
+* ``joint_turning_point``: relative joint rate < 1e-2;
+* ``base_turning_point``: relative base rate < 1e-2;
+* ``other``: none of these;
+* ``now_reached``: the line no longer stops short with this solver (the campaign's status 6 was
+  an earlier solver's).
+
+    PYTHONPATH=python:. python3 -m validation.line_ends [--sample 200] [--seed 0] [--control 200] [--json F.json]
+
+``--control N`` traces N designs whose lines reach every requested Ft and reports how close they
+come to a separatrix anywhere along the line, for comparison with where the given-up lines stop
+(validation/README.md gives the numbers).
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import time
+
+import numpy as np
+
+from .campaign import FIELDS
+from .recheck import STATES
+
+GIVEN_UP = ("no_convergence", "stalled", "max_points")
+
+
+def node_quantities(line, d: dict) -> dict:
+    """The quantities of the module docstring at every node of a traced line (arrays)."""
+    ft, fn, beta = (np.asarray(a, float) for a in (line.Ft, line.Fn, line.theta_joint))
+    k2 = np.asarray(line.theta_rate_joint, float)
+    phi = np.arctan2(fn, ft)
+    N = np.hypot(fn, ft)
+    c1 = 0.0 if math.isinf(d["EA1"]) else 1.0 / d["EA1"]
+    c2 = 0.0 if math.isinf(d["EA2"]) else 1.0 / d["EA2"]
+    # first integrals (eqs 8, 12): EI/2 theta'^2 = R(u) = M - N u - c N^2 u^2 / 2, u = sin(theta - phi);
+    # R(1) = 0 is the separatrix (the saddle at u = 1 on the orbit)
+    M2 = ft + d["w"]
+    v = np.sin(beta - d["alpha2"] - phi)
+    k1_joint = d["EI2"] / d["EI1"] * k2  # moment continuity at the joint (eq 4)
+    M1 = d["EI1"] / 2 * k1_joint ** 2 + N * v + c1 * N * N * v * v / 2
+    return {"Ft": ft, "Fn": fn, "beta": beta,
+            "joint_rate_rel": np.abs(k2) / math.sqrt(2 * d["w"] / d["EI2"]),
+            "base_rate_rel": np.abs(np.asarray(line.theta_rate_base, float)) / math.sqrt(2 * d["w"] / d["EI1"]),
+            "one_minus_u": 1.0 - np.sin(beta - phi),
+            "spatula_separatrix": (M2 - N - c2 * N * N / 2) / (np.abs(M2) + N),
+            "beam_separatrix": (M1 - N - c1 * N * N / 2) / (np.abs(M1) + N),
+            "spatula_elastic_lengths": d["l2"] * np.sqrt(N / d["EI2"]),
+            "beam_elastic_lengths": d["l1"] * np.sqrt(N / d["EI1"])}
+
+
+def last_node(line, d: dict) -> dict:
+    """node_quantities at the last node, where the line stopped."""
+    return {k: float(v[-1]) for k, v in node_quantities(line, d).items()}
+
+
+def band(x: float) -> str:
+    return "below 1e-12" if x < 1e-12 else "1e-12 to 1e-9" if x < 1e-9 else "1e-9 to 1e-6" if x < 1e-6 \
+        else "1e-6 to 1e-3" if x < 1e-3 else "above 1e-3"
+
+
+def control(n: int, seed: int, npz: str = STATES) -> dict:
+    """For comparison: lines that reach every requested Ft (designs without status 6 and with a
+    solved state), traced the same way; the smallest separatrix distance of either segment over
+    all their nodes, in the same bands."""
+    import gecko
+    z = np.load(npz)
+    P, FT, ST = z["P"], z["FT"], z["status"]
+    rows = np.flatnonzero(~(ST == 6).any(axis=1) & (ST == 0).any(axis=1))
+    pick = np.sort(np.random.default_rng(seed).choice(rows, size=min(n, len(rows)), replace=False))
+    bands = {}
+    for i in pick:
+        d = dict(zip(FIELDS, map(float, P[i])))
+        line = gecko.TwoLevelSeta(**d).critical_line(ft_end=float(np.max(FT[i])), resolve_nodes=False, errors="nan")
+        if not len(line.Ft):
+            continue
+        q = node_quantities(line, d)
+        m = float(np.nanmin(np.minimum(np.abs(q["spatula_separatrix"]), np.abs(q["beam_separatrix"]))))
+        bands[band(m)] = bands.get(band(m), 0) + 1
+    return {"designs": int(len(pick)), "of_designs": int(len(rows)), "seed": seed, "closest_approach": bands}
+
+
+def mechanism(end: str, node: dict | None) -> str:
+    if end not in GIVEN_UP:
+        return "now_reached"
+    if node is None:
+        return "other"
+    if abs(node["spatula_separatrix"]) < 1e-3:
+        return "spatula_separatrix"
+    if abs(node["beam_separatrix"]) < 1e-3:
+        return "beam_separatrix"
+    if node["joint_rate_rel"] < 1e-2:
+        return "joint_turning_point"
+    if node["base_rate_rel"] < 1e-2:
+        return "base_turning_point"
+    return "other"
+
+
+def run(n: int, seed: int = 0, npz: str = STATES, progress: bool = False) -> dict:
+    import gecko
+    z = np.load(npz)
+    P, FT, ST = z["P"], z["FT"], z["status"]
+    rows = np.flatnonzero((ST == 6).any(axis=1))
+    rng = np.random.default_rng(seed)
+    pick = np.sort(rng.choice(rows, size=min(n, len(rows)), replace=False))
+    t0 = time.time()
+    designs = []
+    for i in pick:
+        d = dict(zip(FIELDS, map(float, P[i])))
+        s = gecko.TwoLevelSeta(**d)
+        ft = FT[i]
+        # the trace the solver makes for the positive requested Ft (critical_line_at_imp): from 0
+        # to the largest of them; a design whose status-6 states are all negative is traced down
+        neg_only = not np.any((ST[i] == 6) & (ft >= 0))
+        end_ft = float(np.min(ft)) if neg_only else float(np.max(ft))
+        line = s.critical_line(ft_end=end_ft, resolve_nodes=False, errors="nan")
+        end = line.end_code.name if line.end_code is not None else str(line.end)
+        node = last_node(line, d) if len(line.Ft) else None
+        rec = {"design": int(i), "ft_end": end_ft, "end": end, "nodes": int(len(line.Ft)),
+               "mechanism": mechanism(end, node), "last": node}
+        designs.append(rec)
+        if progress:
+            print(f"design {i}: {end} after {rec['nodes']} nodes, {rec['mechanism']}", flush=True)
+    counts = {}
+    for r in designs:
+        counts.setdefault(r["end"], {})
+        counts[r["end"]][r["mechanism"]] = counts[r["end"]].get(r["mechanism"], 0) + 1
+    # how close: the separatrix distance of the segment named by the mechanism, in decades
+    closeness = {}
+    for r in designs:
+        m = r["mechanism"]
+        if m.endswith("_separatrix"):
+            b = band(abs(r["last"][m]))
+            closeness.setdefault(m, {})
+            closeness[m][b] = closeness[m].get(b, 0) + 1
+    return {"sample": len(designs), "of_designs": int(len(rows)), "seed": seed,
+            "seconds": round(time.time() - t0, 1), "counts": counts, "separatrix_distance": closeness,
+            "designs": designs}
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--sample", type=int, default=200)
+    ap.add_argument("--seed", type=int, default=0)
+    ap.add_argument("--npz", default=STATES)
+    ap.add_argument("--json", default=None)
+    ap.add_argument("--control", type=int, default=0, metavar="N",
+                    help="also trace N designs without a status-6 state: their closest approach to a "
+                         "separatrix over the whole line")
+    args = ap.parse_args(argv)
+    res = run(args.sample, args.seed, args.npz)
+    if args.control:
+        res["control"] = control(args.control, args.seed + 1, args.npz)
+    print(f"{res['sample']} of {res['of_designs']} designs with a status-6 state ({res['seconds']} s)")
+    print(json.dumps(res["counts"], indent=1))
+    print("separatrix distance |R(1)| / (|M| + N) at the last node:")
+    print(json.dumps(res["separatrix_distance"], indent=1))
+    if "control" in res:
+        c = res["control"]
+        print(f"control: {c['designs']} lines without a give-up, closest approach over all nodes:")
+        print(json.dumps(c["closest_approach"], indent=1))
+    if args.json:
+        with open(args.json, "w") as f:
+            json.dump(res, f, indent=1, allow_nan=True)
+            f.write("\n")
+
+
+if __name__ == "__main__":
+    main()
