@@ -19,7 +19,8 @@ range (sinh-spaced, dense near 0, out to +-S with S = 10 max(|Ft|, F, EI1/l1^2, 
 campaign's Ft scale), each sign change with both signs above the shot's own error estimate is
 refined by bisection (30 halvings) and kept as a root only where |R| at the bracket's ends falls
 as the bracket shrinks (a sign change across a jump of the shot, its beta switching branch, is
-recorded apart as a jump, one the shot's accuracy cannot resolve as unresolved), and every root is classified by the model's forms at that state (b4 < 1 and
+recorded apart as a jump, one the shot's accuracy cannot resolve as unresolved), and every root
+is classified by the model's forms at that state (b4 < 1 and
 1 + 2 c M > 0 for beam and spatula, with M from the first integrals, eqs 8 and 12: the spatula's
 M2 = Ft + w, the beam's from the joint conditions, eq 4). Only theta1(0) = alpha1 itself is a
 root (not alpha1 + 2 pi k: the solver's shortest-path convention).
