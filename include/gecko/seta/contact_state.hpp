@@ -249,9 +249,8 @@ struct forward_problem {
     using std::cos; using std::sin;
     joint_sines_half(sin(beta / 2), cos(beta / 2), ub, v);
   }
-  // sin and cos of beta - phi.
-  void joint_sine_cos(T beta, T& ub, T& cu) const {
-    const T sb = std::sin(beta / 2), cb = std::cos(beta / 2);
+  // sin and cos of beta - phi, from sb, cb = sin, cos(beta/2).
+  void joint_sine_cos_half(T sb, T cb, T& ub, T& cu) const {
     const T sinb = 2 * sb * cb, cosb = (cb - sb) * (cb + sb);
     ub = sinb * cphi - cosb * sphi;
     cu = cosb * cphi + sinb * sphi;
@@ -345,7 +344,6 @@ struct forward_problem {
   }
   // As eval, with sb, cb = sin, cos(beta/2) from the caller.
   bool eval_half(T beta, T sb, T cb, int sp, int sq, eval_out& o, bool with_beam, bool with_spatula) const {
-    using std::sqrt;
     T ub, v;
     joint_sines_half(sb, cb, ub, v);
     o.p = signed_sqrt(R2u(ub), sp);
@@ -358,26 +356,29 @@ struct forward_problem {
                    o.spatula_plan, o.unsupported, this))
         return false;
     }
-    if (with_beam) {
-      const T r1 = R1v(v, o.p);
-      // R1 = 0 (theta1'(0) = 0, where the two base-rate branches join) rounds either way.
-      const T r1_tol = 64 * std::numeric_limits<T>::epsilon() * (ratio * o.p * o.p + 2 * N);
-      if (!(r1 >= -r1_tol)) return false;
-      o.q = signed_sqrt(r1, sq);
-      T M1 = ratio * o.p * o.p + N * v;
-      if constexpr (E1) M1 += d.c1 * N * N * v * v / 2;
-      const auto g1 = make_segment<E1>(d.EI1, d.c1, M1, N);
-      const T sh1 = sb * d.cA - cb * d.sA, ch1 = cb * d.cA + sb * d.sA;
-      const T sm1 = sb * d.cB + cb * d.sB, cm1 = cb * d.cB - sb * d.sB;
-      const direct_trig<T> trig1{v, u0, sh1, ch1, sm1 * cphi - cm1 * sphi};
-      const T X3s = o.q / seg_sqrt_f4(g1, u0);
-      const T X3e = sqrt_ratio * o.p / seg_sqrt_f4(g1, v);
-      T L1 = 0;
-      if (!seg_len(g1, d.alpha1 - phi, X3s, beta - d.alpha2 - phi, X3e, trig1, (beta - d.alpha2 - d.alpha1) / 2, L1,
-                   o.beam_plan, o.unsupported))
-        return false;
-      o.G = L1 - d.l1;
-    }
+    return !with_beam || eval_beam(beta, sb, cb, v, sq, o);
+  }
+  // The beam part of eval_half: G at the joint state (beta, o.p) with v = sin(beta - alpha2 - phi)
+  // (the scan's nodes have them already).
+  bool eval_beam(T beta, T sb, T cb, T v, int sq, eval_out& o) const {
+    const T r1 = R1v(v, o.p);
+    // R1 = 0 (theta1'(0) = 0, where the two base-rate branches join) rounds either way.
+    const T r1_tol = 64 * std::numeric_limits<T>::epsilon() * (ratio * o.p * o.p + 2 * N);
+    if (!(r1 >= -r1_tol)) return false;
+    o.q = signed_sqrt(r1, sq);
+    T M1 = ratio * o.p * o.p + N * v;
+    if constexpr (E1) M1 += d.c1 * N * N * v * v / 2;
+    const auto g1 = make_segment<E1>(d.EI1, d.c1, M1, N);
+    const T sh1 = sb * d.cA - cb * d.sA, ch1 = cb * d.cA + sb * d.sA;
+    const T sm1 = sb * d.cB + cb * d.sB, cm1 = cb * d.cB - sb * d.sB;
+    const direct_trig<T> trig1{v, u0, sh1, ch1, sm1 * cphi - cm1 * sphi};
+    const T X3s = o.q / seg_sqrt_f4(g1, u0);
+    const T X3e = sqrt_ratio * o.p / seg_sqrt_f4(g1, v);
+    T L1 = 0;
+    if (!seg_len(g1, d.alpha1 - phi, X3s, beta - d.alpha2 - phi, X3e, trig1, (beta - d.alpha2 - d.alpha1) / 2, L1,
+                 o.beam_plan, o.unsupported))
+      return false;
+    o.G = L1 - d.l1;
     return true;
   }
 
@@ -387,8 +388,12 @@ struct forward_problem {
     return o.G;
   }
   T L2(T beta, int sp, bool* unsupported = nullptr) const {
+    return L2_half(beta, std::sin(beta / 2), std::cos(beta / 2), sp, unsupported);
+  }
+  // As L2, with sb, cb = sin, cos(beta/2) from the caller.
+  T L2_half(T beta, T sb, T cb, int sp, bool* unsupported = nullptr) const {
     eval_out o;
-    if (!eval(beta, sp, 1, o, false, true)) {
+    if (!eval_half(beta, sb, cb, sp, 1, o, false, true)) {
       if (unsupported && o.unsupported) *unsupported = true;
       return std::numeric_limits<T>::quiet_NaN();
     }
@@ -417,13 +422,15 @@ inline bool invert_spatula(const FP& fp, int sp, T lo, T hi, T f_lo, T target, T
   const T scale = sqrt(fp.d.EI2 / 2);
   const T ftol = 64 * eps * (1 + target);
   for (int it = 0; it < 100; ++it) {
-    const T L = fp.L2(x, sp);
+    // one sincos(x/2) for the length and for the Halley step's sines
+    const T sb = std::sin(x / 2), cb = std::cos(x / 2);
+    const T L = fp.L2_half(x, sb, cb, sp);
     if (!(L == L)) return false;
     const T f = L - target;
     if (fabs(f) <= eps * target) { beta = x; return true; }
     if ((f > 0) == (f_lo > 0)) lo = x; else hi = x;
     T ub, cu;
-    fp.joint_sine_cos(x, ub, cu);
+    fp.joint_sine_cos_half(sb, cb, ub, cu);
     const T p = fp.signed_sqrt(fp.R2u(ub), sp);
     T xn = (lo + hi) / 2;
     if (p != 0) {
@@ -633,13 +640,14 @@ inline contact_status contact_solve(const seta_params<T>& d, T Fn, T Ft, const c
   node nodes[max_nodes];
   int nn = 0;
   const T inf = std::numeric_limits<T>::infinity();
-  auto fill = [&](node& x) {
+  // sb, cb: sin and cos of x.beta / 2 (the scan's nodes pass them from a rotation, the others
+  // compute them).
+  auto fill_sc = [&](node& x, T sb, T cb) {
     typename FP::eval_out o;
     // The shorter beam path leaves alpha1 in the direction of the joint end (sign of h1); the
     // other is longer by twice the distance from alpha1 to a turning point, so G >= 0 there
     // whenever G >= 0 on the shorter one.
     T ub, vj;
-    const T sb = std::sin(x.beta / 2), cb = std::cos(x.beta / 2);
     fp.joint_sines_half(sb, cb, ub, vj);
     const T p = FP::signed_sqrt(fp.R2u(ub), x.sp);
     const T r1 = fp.R1v(vj, p);
@@ -648,7 +656,8 @@ inline contact_status contact_solve(const seta_params<T>& d, T Fn, T Ft, const c
     if (!(r1 >= 0)) return;
     const int s_short = (x.beta - d.alpha2 - d.alpha1 >= 0) ? 1 : -1;
     const int i_short = s_short > 0 ? 0 : 1;
-    if (fp.eval_half(x.beta, sb, cb, x.sp, s_short, o, true, false)) x.G[i_short] = o.G;
+    o.p = p;  // the joint state is the node's: only the beam is measured
+    if (fp.eval_beam(x.beta, sb, cb, vj, s_short, o)) x.G[i_short] = o.G;
     else if (o.unsupported) unsupported = true;
     if (x.G[i_short] == x.G[i_short]) {
       // The longer path adds twice the distance d from alpha1 to the turning point behind it;
@@ -676,9 +685,10 @@ inline contact_status contact_solve(const seta_params<T>& d, T Fn, T Ft, const c
         return;
       }
     }
-    if (fp.eval_half(x.beta, sb, cb, x.sp, -s_short, o, true, false)) x.G[1 - i_short] = o.G;
+    if (fp.eval_beam(x.beta, sb, cb, vj, -s_short, o)) x.G[1 - i_short] = o.G;
     else if (o.unsupported) unsupported = true;
   };
+  auto fill = [&](node& x) { fill_sc(x, std::sin(x.beta / 2), std::cos(x.beta / 2)); };
   // At theta1(l1) = alpha1 (beta = alpha1 + alpha2) the beam's path with theta1'(0) of the joint
   // rate's sign shrinks to nothing on one side (G -> -l1) and jumps to a whole period on the other:
   // nodes on both sides of it keep the roots next to that jump bracketed.
@@ -686,7 +696,19 @@ inline contact_status contact_solve(const seta_params<T>& d, T Fn, T Ft, const c
   const T jump_gap = T(1e-9) * (1 + fabs(beta_jump));
   for (int k = 0; k < n_pieces; ++k) {
     const auto& pc = pieces[k];
-    for (int j = (k == 0 ? 0 : 1); j < n_scan; ++j) {
+    // sin and cos of beta/2 along the piece's equally spaced nodes by rotation (within a few ulp
+    // after the few steps, far below what a sign of G at a node depends on): three sincos per
+    // piece (its start, the step, its end) instead of one per node.
+    const T half_step = (pc.beta_to - pc.beta_from) / T(2 * (n_scan - 1));
+    const T rs = std::sin(half_step), rc = std::cos(half_step);
+    T sj = std::sin(pc.beta_from / 2), cj = std::cos(pc.beta_from / 2);
+    for (int j = 0; j < n_scan; ++j) {
+      if (j > 0) {
+        const T s_next = sj * rc + cj * rs;
+        cj = cj * rc - sj * rs;
+        sj = s_next;
+      }
+      if (j == 0 && k > 0) continue;  // the previous piece's last node
       node x;
       x.beta = j == n_scan - 1 ? pc.beta_to : pc.beta_from + (pc.beta_to - pc.beta_from) * T(j) / T(n_scan - 1);
       x.sp = pc.sp;
@@ -700,7 +722,9 @@ inline contact_status contact_solve(const seta_params<T>& d, T Fn, T Ft, const c
           nodes[nn++] = y;
         }
       }
-      fill(x);
+      // the piece's last node is its end exactly: there the sines are computed, not rotated
+      if (j == n_scan - 1) fill(x);
+      else fill_sc(x, sj, cj);
       nodes[nn++] = x;
     }
   }
