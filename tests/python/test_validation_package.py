@@ -111,8 +111,8 @@ def test_line_ends_first_integrals_match_the_solved_rates():
     u0 = np.sin(d["alpha1"] - phi)
     np.testing.assert_allclose(M1 - N * u0, d["EI1"] / 2 * line.theta_rate_base ** 2, rtol=1e-9, atol=1e-9)
     np.testing.assert_allclose(q["beam_separatrix"], (M1 - N) / (np.abs(M1) + N), rtol=1e-12)
-    # the reference line crosses both separatrices between Ft = 4 and 8 (the distances change sign)
-    # and is solved on both sides: crossing one is not what makes a line give up
+    # the reference line crosses both separatrices (the distances have opposite signs at Ft = 0 and
+    # 9.5) and every state between is solved: crossing one is not what makes a line give up
     for key in ("spatula_separatrix", "beam_separatrix"):
         assert q[key][0] > 1e-3 and q[key][-1] < -1e-3, q[key]
     node = {k: float(v[0]) for k, v in q.items()}
