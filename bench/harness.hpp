@@ -28,6 +28,8 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <ctime>
 #include <fstream>
@@ -178,6 +180,21 @@ inline double time_cases(std::vector<timed_case>& cases, int reps, double target
 }
 
 // ---- the record of a run -----------------------------------------------------------------------
+
+// The arguments of a benchmark that writes a results file: `[reps] [--out DIR]` (repetitions,
+// and the folder of the results, bench/results by default).
+struct run_args {
+  int reps;
+  std::string out_dir = "bench/results";
+};
+inline run_args parse_run_args(int argc, char** argv, int default_reps) {
+  run_args a{default_reps};
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--out") && i + 1 < argc) a.out_dir = argv[++i];
+    else a.reps = std::atoi(argv[i]);
+  }
+  return a;
+}
 
 // The 1, 5 and 15 minute load averages ("unknown" where /proc/loadavg cannot be read): results
 // files note them because the machines are shared.

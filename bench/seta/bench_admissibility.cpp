@@ -10,8 +10,6 @@
 // time is printed too). Median of repetitions. Writes <out>/admissibility.md and .csv.
 //   cmake --build <build> --target bench_admissibility && <build>/bench/seta/bench_admissibility [reps] [--out DIR]
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <fstream>
 #include <limits>
 #include <string>
@@ -24,12 +22,9 @@ using gecko_bench::median;
 using gecko_bench::thread_cpu_ns;
 
 int main(int argc, char** argv) {
-  int reps = 21;
-  std::string out_dir = "bench/results";
-  for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--out") && i + 1 < argc) out_dir = argv[++i];
-    else reps = std::atoi(argv[i]);
-  }
+  const auto args = gecko_bench::parse_run_args(argc, argv, 21);
+  const int reps = args.reps;
+  const std::string& out_dir = args.out_dir;
   struct row {
     double alpha2, line, check, share, pub;  // us/point, us/point, percent of the line, us/point
     int slow, bad;

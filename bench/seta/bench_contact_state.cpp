@@ -8,8 +8,6 @@
 //   cmake --build <build> --target bench_contact_state && <build>/bench/seta/bench_contact_state [reps] [--out DIR]
 #include <algorithm>
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -18,12 +16,9 @@
 #include "harness.hpp"  // bench/harness.hpp: the benchmarks' one timing harness
 
 int main(int argc, char** argv) {
-  int reps = 15;
-  std::string out_dir = "bench/results";
-  for (int i = 1; i < argc; ++i) {
-    if (!std::strcmp(argv[i], "--out") && i + 1 < argc) out_dir = argv[++i];
-    else reps = std::atoi(argv[i]);
-  }
+  const auto args = gecko_bench::parse_run_args(argc, argv, 15);
+  const int reps = args.reps;
+  const std::string& out_dir = args.out_dir;
   const gecko::TwoLevelSeta<double> seta;  // the paper's reference design
   const gecko::contact_solver<double> solve(seta);
   const int n = 1000;
