@@ -2,7 +2,7 @@
 //
 // Reference scene (docs/theory/two_level_seta.md), a 1000-point critical line Ft = linspace(0, 9.9, 1000):
 //   * gecko::critical_line_at at several Newton tolerances (the whole call: natural state by
-//     homotopy, continuation, one Newton solve per point);
+//     homotopy, continuation, chord steps from the traced line's nodes per point);
 //   * GSL gsl_multiroot_fdfsolver_hybridsj (Powell's hybrid method with the Jacobian) driving the
 //     same residual and Jacobian (gecko/seta/critical_equations.hpp's system), natural
 //     continuation point to point from the previous solution, at several tolerances;
@@ -280,10 +280,12 @@ int main(int argc, char** argv) {
   md << "- Error: max |dFn| / max(1, |Fn|) over the 1000 points, measured by an independent RK4 shooting of the "
         "governing ODE in long double (not by gecko itself).\n";
   md << "- Timing: thread CPU time per point, median of " << reps << " repetitions, methods interleaved.\n";
-  md << "- Why the gecko tolerance hardly matters here: each point starts from the cubic Hermite guess of the "
-        "traced line (accurate to ~1e-7), and its first Newton step is accepted once the Newton-Kantorovich "
-        "bound omega/2 |dz|^2 (omega estimated along the line, safety 4) is below the tolerance; one step from "
-        "such a guess is already at ~1e-14, so every setting takes one Jacobian per point (1e-14 forces a second).\n\n";
+  md << "- What the gecko tolerance changes: each point starts from the cubic Hermite guess of the traced line "
+        "(accurate to ~1e-7) and takes chord steps, residuals without a Jacobian, with the Jacobian interpolated "
+        "between the two nodes around it (gecko/seta/detail/line_output.hpp); a step is the last one when it is "
+        "below the tolerance and at most a quarter of the step before it. Every setting so takes at least two "
+        "residuals per point (the second step is already ~1e-12 or below), the tight settings a third where it "
+        "is not below them; Newton from the guess where the chord steps do not settle a point.\n\n";
   md << "| method | setting | us/point | max rel. error of Fn | failed points |\n|---|---|---:|---:|---:|\n";
   for (const auto& r : rows) {
     char buf[256];

@@ -139,7 +139,9 @@ class CriticalLine:
     status : numpy.ndarray of int
         0 converged; other codes in :data:`gecko.STATUS`.
     iterations : numpy.ndarray of int
-        Newton iterations (Jacobian evaluations).
+        Evaluations of the equations by the solver: with their Jacobian in Newton's
+        iterations, the residual alone in the chord steps that read a state off the traced
+        line (which reuse a node's Jacobian).
     theta_rate_joint, theta_rate_base : numpy.ndarray
         theta2'(l1) and theta1'(0), the signed end rates of the solver's unknowns.
     turning_points_beam, turning_points_spatula : numpy.ndarray of int

@@ -273,3 +273,63 @@ TEST_CASE("bad input names the parameter and its range", "[seta][errors]") {
   CHECK(std::isnan(out[1].Fn));
   CHECK(seta_test::solved(out[2].status));
 }
+
+TEST_CASE("states read off a line by chord steps: Newton's states, and Newton where the steps do not contract",
+          "[seta][line][chord]") {
+  // The dense output (gecko/seta/detail/line_output.hpp) reads each state off the traced line by
+  // chord steps: residuals alone, with the nodes' Jacobians. On the reference line every state so
+  // read must be the state full Newton finds from the same guess, and a chord whose steps do not
+  // contract must say so and leave its guess untouched (the caller then runs Newton).
+  using Policy = gecko::policies::default_policy;
+  using System = gecko::detail::seta_system<double, Policy, false, true>;
+  const gecko::TwoLevelSeta<double> s;
+  const System sys(gecko::detail::make_seta_params(s));
+  gecko::critical_line_options<double> opt;
+  gecko::detail::traced_line<System> line;
+  System::vec z0;
+  System::plan_type plan0;
+  gecko::critical_state<double> natural;
+  REQUIRE(gecko::detail::trace(sys, 9.9, 9.9, opt, 1000, z0, plan0, natural, line));
+  REQUIRE(line.jacobians.size() == line.nodes.size());
+  REQUIRE(line.nodes.size() > 20);
+  int states = 0, evaluations = 0;
+  double worst = 0;
+  for (std::size_t i = 0; i + 1 < line.nodes.size(); ++i) {
+    const auto& a = line.nodes[i];
+    const auto& b = line.nodes[i + 1];
+    for (const double f : {0.25, 0.5, 0.75}) {
+      const double mu = a.Ft + f * (b.Ft - a.Ft);
+      System::vec guess;
+      REQUIRE(gecko::detail::hermite_guess(a, b, mu, guess));
+      const std::size_t near = f <= 0.5 ? i : i + 1, other = near == i ? i + 1 : i;
+      const double w = (mu - line.nodes[near].Ft) / (line.nodes[other].Ft - line.nodes[near].Ft);
+      const System::mat E = w * (line.jacobians[other] - line.jacobians[near]);
+      const Eigen::PartialPivLU<System::mat> lu(line.jacobians[near]);
+      System::vec z = guess;
+      double u14[2];
+      int its = 0;
+      INFO("node " << i << " fraction " << f);
+      REQUIRE(gecko::detail::chord_solve(sys, lu, E, z, mu, line.plans[near], 1e-12, its, u14));
+      CHECK(sys.plan_valid(line.plans[near], z, mu, u14));
+      CHECK(its <= 4);
+      auto plan = line.plans[near];
+      System::vec zn = guess;
+      int newton_its = 0;
+      REQUIRE(gecko::detail::solve_with_plans(sys, zn, mu, plan, 1e-14, 40, newton_its) ==
+              gecko::critical_status::converged);
+      worst = std::max(worst, sys.step_norm(z - zn, zn));
+      ++states;
+      evaluations += its;
+      // E = -0.9 J: the first-order inverse is 1.9 J^-1, steps 1.9 times Newton's, which overshoot
+      // and contract by ~0.9, not by the quarter the chord asks for.
+      System::vec zb = guess;
+      int bad_its = 0;
+      CHECK_FALSE(gecko::detail::chord_solve(sys, lu, System::mat(-0.9 * line.jacobians[near]), zb, mu,
+                                              line.plans[near], 1e-12, bad_its, u14));
+      CHECK(zb == guess);
+    }
+  }
+  INFO(states << " states, " << evaluations << " residuals");
+  CHECK(worst <= 1e-12);
+  CHECK(evaluations <= 3 * states);  // two or three residuals per state (measured: mostly two)
+}

@@ -143,6 +143,16 @@ struct fiber_system {
     for (int i = 0; i < 2; ++i) { F[i] = r[i].v; J(i, 0) = r[i].d[0]; J(i, 1) = r[i].d[1]; }
     return F.allFinite() && J.allFinite();
   }
+  // F alone (no Jacobian); u14, where given, as eval's.
+  bool residual(const vec& z, T mu, const plan_type& plan, vec& F, T* u14 = nullptr) const {
+    T Ft, edge;
+    forces(mu, Ft, edge);
+    T r[2];
+    residual_imp(z[0], z[1], Ft, edge, plan, r, u14, false, nullptr, nullptr);
+    F[0] = r[0];
+    F[1] = r[1];
+    return F.allFinite();
+  }
   plan_type plan(const vec& z, T mu) const {
     T Ft, edge;
     forces(mu, Ft, edge);

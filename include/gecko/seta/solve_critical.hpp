@@ -50,7 +50,9 @@ struct critical_state {
   T Fn = std::numeric_limits<T>::quiet_NaN();
   T theta_joint = std::numeric_limits<T>::quiet_NaN();       // beta = theta2(l1)
   critical_status status = critical_status::not_converged;
-  int iterations = 0;                                         // Jacobian evaluations
+  // Evaluations of the equations by the solve: with their Jacobian in Newton's iterations, the
+  // residual alone in the chord steps that read a state off a traced line (detail/line_output.hpp).
+  int iterations = 0;
   T theta_rate_joint = std::numeric_limits<T>::quiet_NaN();  // theta2'(l1)
   T theta_rate_base = std::numeric_limits<T>::quiet_NaN();   // theta1'(0)
   int turning_points_beam = -1;                               // sign changes of theta' inside

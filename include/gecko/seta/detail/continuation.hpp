@@ -50,6 +50,9 @@ struct traced_line {
   using T = typename System::value_type;
   std::vector<line_node<T, System::n>> nodes;
   std::vector<typename System::plan_type> plans;
+  // dF/dz at each node (from its tangent's evaluation): the chord steps of the dense output
+  // (gecko/seta/detail/line_output.hpp) reuse it instead of forming a Jacobian per output.
+  std::vector<typename System::mat> jacobians;
   std::vector<T> folds;  // Ft at the folds (dFt/ds = 0), linearly located between nodes
   line_end end = line_end::reached_ft_end;
   T omega = 0;           // largest affine Lipschitz estimate 2 theta / ||dx|| seen by the corrector
@@ -78,13 +81,15 @@ template <class System>
 inline bool tangent_at(const System& sys, const typename System::vec& z, typename System::value_type Ft,
                        const typename System::plan_type& plan,
                        const Eigen::Matrix<typename System::value_type, System::n + 1, 1>& previous,
-                       Eigen::Matrix<typename System::value_type, System::n + 1, 1>& t) {
+                       Eigen::Matrix<typename System::value_type, System::n + 1, 1>& t,
+                       typename System::mat* J_out = nullptr) {
   using T = typename System::value_type;
   constexpr int n = System::n;
   typename System::vec F, JFt;
   typename System::mat J;
   T u14[2];
   if (!sys.eval(z, Ft, plan, F, J, &JFt, u14)) return false;
+  if (J_out) *J_out = J;
   Eigen::Matrix<T, n + 1, n + 1> A;
   A.template topLeftCorner<n, n>() = J;
   A.template topRightCorner<n, 1>() = JFt;
@@ -187,13 +192,15 @@ inline traced_line<System> follow_line(const System& sys, const typename System:
   t_prev[n] = T(dir);
   xvec t;
   auto plan = plan0;
-  if (!tangent_at(sys, z0, Ft0, plan, t_prev, t)) {
+  typename System::mat J;
+  if (!tangent_at(sys, z0, Ft0, plan, t_prev, t, &J)) {
     line.end = line_end::no_convergence;
     return line;
   }
   if (t[n] * dir < 0) t = -t;
   line.nodes.push_back({z0, Ft0, t, 0});
   line.plans.push_back(plan);
+  line.jacobians.push_back(J);
   const T ds_max = opt.max_step * opt.scale;
   const T ds_min = T(1e-9) * opt.scale;
   T ds = (opt.max_step < T(0.02) ? opt.max_step : T(0.02)) * opt.scale;
@@ -258,9 +265,10 @@ inline traced_line<System> follow_line(const System& sys, const typename System:
       }
       if (ok && (z - last.z).template lpNorm<Eigen::Infinity>() < 4 * ds) {
         xvec tn;
-        if (tangent_at(sys, z, u, p, tl, tn)) {
+        if (tangent_at(sys, z, u, p, tl, tn, &J)) {
           line.nodes.push_back({z, u, tn, branch});
           line.plans.push_back(p);
+          line.jacobians.push_back(J);
           line.end = (opt.ft_max == std::fabs(ft_limit)) ? line_end::reached_ft_max : line_end::reached_ft_end;
           return line;
         }
@@ -298,7 +306,7 @@ inline traced_line<System> follow_line(const System& sys, const typename System:
     if (ok && (x - x0).norm() > 3 * ds) ok = false;  // jumped to another branch
     if (ok && fabs(x[n]) > opt.ft_max) ok = false;
     xvec tn;
-    if (ok) ok = tangent_at(sys, x.template head<n>(), x[n], p, tl, tn);
+    if (ok) ok = tangent_at(sys, x.template head<n>(), x[n], p, tl, tn, &J);
     if (!ok) {
       ds *= T(0.5);
       if (ds < ds_min) {
@@ -330,6 +338,7 @@ inline traced_line<System> follow_line(const System& sys, const typename System:
     advanced += (x - x0).norm();
     line.nodes.push_back({x.template head<n>(), x[n], tn, branch});
     line.plans.push_back(p);
+    line.jacobians.push_back(J);
     if (omega > line.omega) line.omega = omega;
     plan = p;
     if (branch > 0 && (x[n] - Ft0) * dir < -T(1e-3) * opt.scale) {

@@ -68,7 +68,7 @@ inline T line_parameter(const System& sys, T Ft) {
 
 // Natural state + the followed line in one direction, up to Ft = ft_stop. outputs: how many
 // states will be read off the line; many outputs make denser nodes pay (better Hermite guesses,
-// one Newton step per output).
+// fewer chord steps per output).
 template <class System, class T>
 inline bool trace(const System& sys, T ft_stop, T scale, const critical_line_options<T>& opt, std::size_t outputs,
                   typename System::vec& z0, typename System::plan_type& plan0, critical_state<T>& natural,

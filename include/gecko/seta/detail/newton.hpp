@@ -22,8 +22,8 @@ enum class newton_code { converged, not_converged, singular, invalid_start };
 
 // omega > 0: a known bound of the affine Lipschitz constant of J along the line (estimated by
 // the continuation). Then the first step is accepted without another evaluation as soon as the
-// Newton-Kantorovich bound of the error after it, omega/2 ||dz||^2, is below tol: with the
-// line's dense output as the guess, one Jacobian per point.
+// Newton-Kantorovich bound of the error after it, omega/2 ||dz||^2, is below tol (a line's dense
+// output, gecko/seta/detail/line_output.hpp, where its chord steps did not settle a state).
 template <class System, class T>
 inline newton_code newton_fixed_ft(const System& sys, typename System::vec& z, T Ft,
                                    const typename System::plan_type& plan, T tol, int max_iterations,

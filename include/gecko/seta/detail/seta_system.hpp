@@ -92,10 +92,11 @@ struct seta_system {
     return F.allFinite() && J.allFinite();
   }
 
-  bool residual(const vec& z, T mu, const plan_type& plan, vec& F) const {
+  // F alone (no Jacobian); u14, where given, as eval's.
+  bool residual(const vec& z, T mu, const plan_type& plan, vec& F, T* u14 = nullptr) const {
     T r[4], Ft, edge;
     forces(mu, Ft, edge);
-    seta_residual<Policy, E1, E2>(d, z[0], z[1], z[2], z[3], Ft, edge, plan, r);
+    seta_residual<Policy, E1, E2>(d, z[0], z[1], z[2], z[3], Ft, edge, plan, r, u14);
     for (int i = 0; i < 4; ++i) F[i] = r[i];
     return F.allFinite();
   }
