@@ -449,7 +449,8 @@ class TwoLevelSeta:
         errors : {"raise", "nan"}, optional
             Bad input raises ``ValueError`` (default) or gives status 5 and NaN for that element.
         tolerance : float, optional
-            Newton's tolerance on the scaled step (default 1e-12).
+            Tolerance on the solver's scaled step (default 1e-12): each state's last step (a chord
+            step from the traced line, or Newton's) is below it.
         ft_end : float, optional
             Traced line only: where to stop (default (Ft)max, or 3 sqrt(EI1 w)/l1 for EA2 = inf).
         resolve_nodes : bool, optional
@@ -875,7 +876,8 @@ class SingleFiber:
         errors : {"raise", "nan"}, optional
             Bad input raises ``ValueError`` (default) or gives status 5 and NaN.
         tolerance : float, optional
-            Newton's tolerance (default 1e-12).
+            Tolerance on the solver's scaled step (default 1e-12), as
+            :meth:`TwoLevelSeta.critical_line`.
 
         Returns
         -------
@@ -915,7 +917,8 @@ def critical_line_batch(designs, Ft, *, threads: int = 1, errors: str = "raise",
     errors : {"raise", "nan"}, optional
         Bad input raises ``ValueError`` (default) or gives status 5 in its entries.
     tolerance : float, optional
-        Newton's tolerance (default 1e-12).
+        Tolerance on the solver's scaled step (default 1e-12), as
+        :meth:`TwoLevelSeta.critical_line`.
     strain_limit : float, optional
         States above this axial strain get status 7 (default: no limit; status 7 also where the
         seta crosses the substrate).

@@ -15,10 +15,12 @@ struct critical_line_options {
   // End of the followed range. NaN: (Ft)max for finite EA2, else 3 sqrt(EI1 w)/l1 (an arbitrary
   // but stated scale: the inextensible line has no (Ft)max). Negative: follow towards negative Ft.
   T ft_end = std::numeric_limits<T>::quiet_NaN();
-  // Newton tolerance of the states at requested Ft values: a state is accepted when the scaled
-  // correction (|dFn|/max(1,|Fn|), |dbeta|, rates relative) is below it, or when the
-  // Newton-Kantorovich bound omega/2 |dz|^2 of the error after the first step is (omega estimated
-  // by the continuation; gecko/seta/detail/newton.hpp).
+  // Tolerance of the states at requested Ft values: a state is accepted when the scaled
+  // correction (|dFn|/max(1,|Fn|), |dbeta|, rates relative) of its last chord step is below it
+  // and a quarter of the step before (gecko/seta/detail/line_output.hpp); where the chord steps
+  // do not settle it, of its last Newton step, or the Newton-Kantorovich bound omega/2 |dz|^2 of
+  // the error after Newton's first step (omega estimated by the continuation;
+  // gecko/seta/detail/newton.hpp).
   T tolerance = T(1e-12);
   T line_tolerance = T(1e-10);  // corrector tolerance of the traced nodes
   int max_points = 100000;
