@@ -182,9 +182,10 @@ inline void evaluate_line(const System& sys, const traced_line<System>& line, co
   }
 }
 
-// Re-solve traced node i to tol (see critical_line_options::resolve_nodes). First by Newton at
-// the node's own line parameter; at a fold that Jacobian is singular (dmu/ds = 0), so then by the
-// bordered arclength corrector, which moves the node orthogonally to the line's tangent. A
+// Re-solve traced node i to tol (see critical_line_options::resolve_nodes). First by chord steps
+// with the node's Jacobian, then by Newton at the node's own line parameter; at a fold that
+// Jacobian is singular (dmu/ds = 0), so then by the bordered arclength corrector, which moves the
+// node orthogonally to the line's tangent. A
 // re-solved state more than 1e-6 (scaled) from the node is not accepted: the node itself is
 // within ~1e-8 of the line, so such a state is the other branch near a fold.
 template <class System, class T>
@@ -194,6 +195,20 @@ inline critical_status resolve_node(const System& sys, const traced_line<System>
   using std::fabs;
   const auto& orig = line.nodes[i];
   const T max_move = T(1e-6);
+  if (line.jacobians.size() == line.nodes.size()) {
+    // Chord steps with the node's own Jacobian (exact there; the node is within the line
+    // tolerance of the state, so two residuals settle it).
+    typename System::vec z = orig.z;
+    T u14[2] = {1, 1};
+    int its = 0;
+    const Eigen::PartialPivLU<typename System::mat> lu(line.jacobians[i]);
+    if (chord_solve(sys, lu, typename System::mat(System::mat::Zero()), z, orig.Ft, line.plans[i], tol, its, u14) &&
+        sys.plan_valid(line.plans[i], z, orig.Ft, u14) && sys.step_norm(z - orig.z, orig.z) <= max_move) {
+      node.z = z;
+      plan = line.plans[i];
+      return critical_status::converged;
+    }
+  }
   {
     typename System::vec z = orig.z;
     auto p = line.plans[i];
