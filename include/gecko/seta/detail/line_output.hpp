@@ -19,8 +19,9 @@ namespace gecko {
 namespace detail {
 
 // The state at line parameter mu from the guess z by chord steps: Newton steps with a fixed
-// matrix in place of the Jacobian and residuals alone, which cost about a fifth of a residual
-// with its Jacobian (forward-mode duals in four directions). The matrix is the Jacobian
+// matrix in place of the Jacobian and residuals alone, which cost a fraction of a residual with
+// its Jacobian (forward-mode duals in four directions: five numbers through every operation,
+// derivatives of every Carlson form). The matrix is the Jacobian
 // interpolated linearly between the two nodes around mu, J = J_near + E (E = w (J_other -
 // J_near), w the fraction of the way to the other node), applied to first order, (J_near + E)^-1
 // ~ J_near^-1 - J_near^-1 E J_near^-1: two solves with the near node's factorisation lu, no
@@ -29,7 +30,7 @@ namespace detail {
 // as the last one when it is below tol and the contraction measured on it, ||dz_k|| /
 // ||dz_k-1||, is at most 1/4: the error left after it is then below theta/(1 - theta) ||dz_k||
 // <= tol/3. (Accepting from the measured contraction before a step falls below tol was tried:
-// it missed by up to 4x tol, the scaled max norm's ratio does not bound the error's.) False,
+// it missed the tolerance, the scaled max norm's ratio does not bound the error's.) False,
 // with z unchanged, when a residual fails or the steps do not contract (the caller then runs
 // Newton from the guess). evaluations: residuals evaluated; u14 as the last one left it (for
 // plan_valid).
