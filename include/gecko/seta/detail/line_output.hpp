@@ -123,8 +123,10 @@ inline void evaluate_line(const System& sys, const traced_line<System>& line, co
       }
       const T a = nodes[i].Ft - target, b = nodes[i + 1].Ft - target;
       if (a != 0 && b != 0 && ((a < 0) == (b < 0))) continue;
-      Eigen::Matrix<T, n, 1> z;
-      if (!hermite_guess(nodes[i], nodes[i + 1], target, z)) z = nodes[i].z;
+      // The cubic Hermite guess, formed once: every attempt below starts from it.
+      Eigen::Matrix<T, n, 1> guess;
+      if (!hermite_guess(nodes[i], nodes[i + 1], target, guess)) guess = nodes[i].z;
+      Eigen::Matrix<T, n, 1> z = guess;
       using std::fabs;
       const std::size_t near = fabs(a) <= fabs(b) ? i : i + 1;
       auto plan = line.plans[near];
@@ -146,15 +148,14 @@ inline void evaluate_line(const System& sys, const traced_line<System>& line, co
       // Lipschitz estimate with a safety factor of 4 (early acceptance of the first Newton step,
       // see newton_fixed_ft); 0 when the line gave none.
       if (st != critical_status::converged) {
-        if (!hermite_guess(nodes[i], nodes[i + 1], target, z)) z = nodes[i].z;
+        z = guess;
         int newton_its = 0;
         st = solve_with_plans(sys, z, target, plan, tol, 40, newton_its, 4 * line.omega);
         its += newton_its;
       }
       if (st != critical_status::converged) {
         // Second chance: plan from the guess itself (the state may sit between two plans).
-        Eigen::Matrix<T, n, 1> z2;
-        if (!hermite_guess(nodes[i], nodes[i + 1], target, z2)) z2 = nodes[i].z;
+        Eigen::Matrix<T, n, 1> z2 = guess;
         auto plan2 = sys.plan(z2, target);
         int its2 = 0;
         st = solve_with_plans(sys, z2, target, plan2, tol, 40, its2);
@@ -186,9 +187,9 @@ inline void evaluate_line(const System& sys, const traced_line<System>& line, co
 // Re-solve traced node i to tol (see critical_line_options::resolve_nodes). First by chord steps
 // with the node's Jacobian, then by Newton at the node's own line parameter; at a fold that
 // Jacobian is singular (dmu/ds = 0), so then by the bordered arclength corrector, which moves the
-// node orthogonally to the line's tangent. A
-// re-solved state more than 1e-6 (scaled) from the node is not accepted: the node itself is
-// within ~1e-8 of the line, so such a state is the other branch near a fold.
+// node orthogonally to the line's tangent. A re-solved state more than 1e-6 (scaled) from the node
+// is not accepted: the node itself is within ~1e-8 of the line, so such a state is the other
+// branch near a fold.
 template <class System, class T>
 inline critical_status resolve_node(const System& sys, const traced_line<System>& line, std::size_t i, T scale,
                                     T tol, line_node<T, System::n>& node, typename System::plan_type& plan) {
