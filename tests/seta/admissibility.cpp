@@ -9,6 +9,7 @@
 #include <limits>
 #include <vector>
 
+#include "gecko/elliptic.hpp"
 #include "gecko/seta/admissibility.hpp"
 #include "gecko/seta/batch.hpp"
 #include "gecko/seta/characteristics.hpp"
@@ -247,6 +248,57 @@ TEST_CASE("random critical states: min z against a dense ODE evaluation", "[seta
   INFO("checked " << checked << " crossing " << crossing << " slow path " << slow_path);
   CHECK(checked > 200);
   CHECK(crossing > 0);
+}
+
+TEST_CASE("libration pieces in chi: length and height against the closed forms in F and E",
+          "[seta][admissibility][chi]") {
+  // An inextensible libration (f4 = 1) in the pendulum's variable chi, sin(omega/2) = k sin(chi):
+  //   s = sqrt(EI/N) F(chi|k^2), and with cos(theta) = 2 k Delta sin(chi) cos(phi) + (2 Delta^2 - 1)
+  //   sin(phi), z = -sqrt(EI/N) (-2 k cos(chi) cos(phi) + (2 E(chi|k^2) - F(chi|k^2)) sin(phi))
+  // (DLMF 19.2.4, 19.2.5): the quadrature of gecko/seta/admissibility.hpp against Legendre's
+  // integrals (tested against mpmath in tests/elliptic) over random windows and pieces, from deep
+  // librations to next to the separatrix (up = 0.9999, k' = 0.007).
+  using namespace gecko::detail;
+  std::uint64_t seed = 0xc41f0013ULL;
+  const double pi_2 = 1.5707963267948966;
+  double worst = 0;
+  int pieces = 0;
+  for (int i = 0; i < 400; ++i) {
+    const double EI = 0.1 + 9.9 * seta_test::uniform01(seed), N = 0.1 + 9.9 * seta_test::uniform01(seed);
+    const double up = i % 4 == 3 ? 1 - std::pow(10.0, -1 - 3 * seta_test::uniform01(seed))
+                                 : -0.99 + 1.98 * seta_test::uniform01(seed);
+    const double phi = -3 + 6 * seta_test::uniform01(seed);
+    const auto g = make_height_segment(EI, 0.0, N * up, N, phi, std::sin(phi), std::cos(phi));
+    const auto f = make_libration_frame(g);
+    const double m = (1 + up) / 2, k = std::sqrt(m);
+    double xa = -pi_2 + pi_2 * 2 * seta_test::uniform01(seed), xb = -pi_2 + pi_2 * 2 * seta_test::uniform01(seed);
+    if (i % 5 == 0) xa = -pi_2, xb = pi_2;  // a whole half-period, turning angle to turning angle
+    const double tol = 1e-13;
+    double ds = 0, dz = 0;
+    int budget = 1000;
+    REQUIRE(height_adaptive_chi(g, f, xa, xb, tol, 0, budget, ds, dz));
+    const double scale = std::sqrt(EI / N);
+    auto len = [&](double x) { return gecko::ellint_f(x, m); };
+    auto height = [&](double x) {
+      return -scale * (-2 * k * std::cos(x) * std::cos(phi) + (2 * gecko::ellint_e(x, m) - len(x)) * std::sin(phi));
+    };
+    const double ref_ds = scale * std::fabs(len(xb) - len(xa));
+    const double ref_dz = xb >= xa ? height(xb) - height(xa) : height(xa) - height(xb);
+    const double bound = 1e-12 * (1 + ref_ds);
+    INFO("i " << i << " up " << up << " chi " << xa << " .. " << xb << " ds " << ds << " ref " << ref_ds << " dz "
+              << dz << " ref " << ref_dz);
+    CHECK(std::fabs(ds - ref_ds) <= bound);
+    CHECK(std::fabs(dz - ref_dz) <= bound);
+    worst = std::max(worst, std::max(std::fabs(ds - ref_ds), std::fabs(dz - ref_dz)) / (1 + ref_ds));
+    // chi of theta: omega = 2 asin(k sin(chi)) from the window's centre phi - pi/2
+    if (std::fabs(xa) < 1.5) {
+      const double theta = phi - pi_2 + 2 * std::asin(k * std::sin(xa));
+      CHECK(std::fabs(libration_chi(g, theta, theta) - xa) <= 1e-12);
+    }
+    ++pieces;
+  }
+  INFO("pieces " << pieces << " worst relative miss " << worst);
+  CHECK(pieces == 400);
 }
 
 TEST_CASE("injected states: a joint pushed below the substrate is caught", "[seta][admissibility]") {

@@ -23,10 +23,13 @@
 //     integrating dz = -(1 + T/EA) cos(theta) dtheta / theta' over the monotone pieces of theta
 //     (split at the turning points theta* where theta' = 0, eq (8)'s first integral
 //     1/2 EI theta'^2 = M - N sin(psi) - N^2 sin^2(psi)/(2 EA), psi = theta - phi, gives theta' as
-//     a function of theta). Each piece is mapped to t in [0, 1] by theta = theta_p + (theta_q -
-//     theta_p)(1 - cos(pi t))/2, which removes the inverse square-root singularity of 1/theta' at a
-//     turning point, and integrated by adaptive 16-point Gauss-Legendre (bisection until the
-//     12-point rule agrees with it to 1e-13 of the seta's length). The same quadrature integrates
+//     a function of theta). On a libration each piece is integrated in the pendulum's variable chi
+//     (sin(omega/2) = k sin(chi), omega the angle from the middle of the libration window), in
+//     which ds/dchi is smooth through the turning points (height_gl_chi below), by adaptive
+//     Gauss-Legendre: the 8-point rule where the 6-point one agrees with it, else the 16-point rule
+//     where the 12-point one does, to 1e-13 of the seta's length, else bisection. On a rotation
+//     each piece is mapped to t in [0, 1] by theta = theta_p + (theta_q - theta_p)(1 - cos(pi t))/2
+//     and integrated by the 16/12-point pair the same way. The same quadrature integrates
 //     ds, and the lengths found must reproduce l1 and the free spatula length: a check of the
 //     decomposition (to 1e-9 of the seta's length). Next to a separatrix (the turning angle close to the saddle
 //     psi = pi/2) the length is too sensitive to the first integral's constant M for M formed from
@@ -34,7 +37,7 @@
 //     when the M it implies is the state's to 1e-10 (calibrate_near_saddle). If neither closes,
 //     the check reports itself as not made (min_z = NaN). A beam that stays monotone (theta in
 //     [-pi/2, pi/2], stretch positive) while the spatula does not is not walked: its lowest point
-//     is the joint. Each quadrature node costs one sincos (height_gl).
+//     is the joint. Each quadrature node costs one sincos (height_gl_chi, height_gl).
 //     The minimum over the candidates is exact up to the quadrature tolerance: no sampling in s.
 // Strain. The largest |T|/EA of each segment over theta's range (T = N sin(psi): +-N where the
 // range contains psi = +-pi/2 mod 2 pi, else the ends), 0 for EA = infinity.
@@ -44,6 +47,7 @@
 #include <limits>
 #include <utility>
 
+#include "gecko/elliptic/first_quadrant_sincos.hpp"
 #include "gecko/seta/critical_residual.hpp"
 #include "gecko/seta/elastica_segment.hpp"
 #include "gecko/seta/two_level_seta.hpp"
@@ -146,19 +150,6 @@ inline height_segment<T> make_height_segment(T EI, T c, T M, T N, T phi, T sin_p
   return g;
 }
 
-// The turning angle of the libration window around theta nearest to it; upper: it is the window's
-// top, psi = psi_top (else its bottom, psi = -pi - psi_top).
-template <class T>
-inline T nearest_turning(const height_segment<T>& g, T theta, bool& upper) {
-  using std::floor;
-  const T pi = seta_pi<T>();
-  const T psi = theta - g.phi;
-  const T k = floor((psi + pi / 2) * (1 / (2 * pi)) + T(0.5));
-  const T pr = psi - k * 2 * pi;  // in the window [-pi - a, a] around -pi/2
-  upper = pr > -pi / 2;
-  return (upper ? g.psi_top : -pi - g.psi_top) + g.phi + k * 2 * pi;
-}
-
 // sin and cos of pi w x/2 and of pi w (1 - x)/2 at the n nodes x on [0, 1], for the widths
 // w = 2^-depth of the adaptive quadrature's intervals: the map's sin(pi t/2) and cos(pi t/2) =
 // sin(pi (1 - t)/2) at the nodes of [t0, t0 + w] then follow by the addition theorem from one
@@ -186,27 +177,35 @@ struct gauss_legendre_map {
   }
 };
 
-// ds and dz over theta from a to b (theta monotone there) for t in [t0, t1] = [t0, t0 + 2^-depth]
-// of the map theta = a + (b - a) sin^2(pi t/2) = b - (b - a) cos^2(pi t/2), by n-point
-// Gauss-Legendre. turn_a, turn_b: the end is a turning point (theta' = 0 there); upper_a,
-// upper_b: that turning point is its window's top (psi = psi_top), else its bottom.
-// In a libration every node is written relative to a turning angle theta_t (the turning end the
-// node lies on the side of, else the nearest one) with delta = theta_t - theta: one sincos of
-// delta/2 gives u = sin(psi), cos(theta) and f3 = -b3 (up - u) = -2 b3 sin(delta/2)
-// cos(psi_t - delta/2), without cancellation as theta -> theta_t when the caller gives delta
-// exactly (the map gives the distance from a turning end directly); sin(psi_t) = up and
-// cos(psi_t) = +-cos_top are the segment's.
+// The map's sines and cosines at the ends of an interval [t0, t0 + 2^-depth]: sin, cos of pi t0/2
+// and of pi (1 - t1)/2, both angles in [0, pi/2] (formed once for the two rules of an interval).
+template <class T>
+struct interval_ends {
+  T s0, c0, s1, c1;
+};
+
+template <class T>
+inline interval_ends<T> make_interval_ends(T t0, int depth) {
+  const T pi = seta_pi<T>();
+  const T t1 = t0 + std::ldexp(T(1), -depth);
+  interval_ends<T> e;
+  first_quadrant_sincos(pi * t0 / 2, e.s0, e.c0);
+  first_quadrant_sincos(pi * (1 - t1) / 2, e.s1, e.c1);
+  return e;
+}
+
+// ds and dz over theta from a to b on a rotation (theta monotone, theta' never zero) for t in
+// [t0, t1] = [t0, t0 + 2^-depth] of the map theta = a + (b - a) sin^2(pi t/2) = b - (b - a)
+// cos^2(pi t/2), by n-point Gauss-Legendre (librations: height_gl_chi below).
 template <int n, class T>
-inline void height_gl(const height_segment<T>& g, T a, T b, bool turn_a, bool turn_b, bool upper_a, bool upper_b,
-                      T t0, int depth, T& ds, T& dz) {
+inline void height_gl(const height_segment<T>& g, T a, T b, T t0, int depth, const interval_ends<T>& ends, T& ds,
+                      T& dz) {
   using std::cos; using std::sin; using std::sqrt;
   const auto& q = gauss_legendre<T, n>::get();
   const auto& m = gauss_legendre_map<T, n>::get();
   const T pi = seta_pi<T>();
   const T w = std::ldexp(T(1), -depth);
-  const T t1 = t0 + w;
-  const T s0 = sin(pi * t0 / 2), c0 = cos(pi * t0 / 2);
-  const T s1 = sin(pi * (1 - t1) / 2), c1 = cos(pi * (1 - t1) / 2);
+  const T s0 = ends.s0, c0 = ends.c0, s1 = ends.s1, c1 = ends.c1;
   const T span = b - a;
   const T sgn = span >= 0 ? T(1) : T(-1);
   const T two_over_EI = 2 / g.EI, cN = g.c * g.N;
@@ -219,56 +218,31 @@ inline void height_gl(const height_segment<T>& g, T a, T b, bool turn_a, bool tu
     const T ch = s1 * m.c1x[depth][i] + c1 * m.s1x[depth][i];  // cos(pi t/2)
     const T th = t < T(0.5) ? a + span * sh * sh : b - span * ch * ch;
     const T dth = span * pi * sh * ch;  // dtheta/dt
-    T u, f3, cos_th;
-    if (g.up < 1) {
-      T delta;
-      bool upper;
-      if (turn_b && (t >= T(0.5) || !turn_a)) {
-        delta = span * ch * ch;
-        upper = upper_b;
-      } else if (turn_a) {
-        delta = -span * sh * sh;
-        upper = upper_a;
-      } else {
-        delta = nearest_turning(g, th, upper) - th;
-      }
-      const T sp = g.up, cp = upper ? g.cos_top : -g.cos_top;  // sin, cos of psi_t
-      const T sd = sin(delta / 2), cd = cos(delta / 2);
-      const T sin_d = 2 * sd * cd, cos_d = 1 - 2 * sd * sd;
-      u = sp * cos_d - cp * sin_d;
-      f3 = -g.b3 * 2 * sd * (cp * cd + sp * sd);
-      const T st = g.sin_phi * cp + g.cos_phi * sp, ct = g.cos_phi * cp - g.sin_phi * sp;  // of theta_t
-      cos_th = ct * cos_d + st * sin_d;
-    } else {
-      const T sn = sin(th), cs = cos(th);
-      u = sn * g.cos_phi - cs * g.sin_phi;
-      f3 = g.M + g.b3 * u;
-      cos_th = cs;
-    }
-    const T R = f3 * (1 + g.b4 * u);
-    if (!(R > 0)) continue;  // only at a turning point itself, where dtheta/dt vanishes too
+    const T sn = sin(th), cs = cos(th);
+    const T u = sn * g.cos_phi - cs * g.sin_phi;
+    const T R = (g.M + g.b3 * u) * (1 + g.b4 * u);
+    if (!(R > 0)) continue;  // not on a rotation of a solved state
     const T rate = sqrt(R * two_over_EI);
     const T wt = q.w[i] * w * dth * sgn / rate;  // ds
     sum_ds += wt;
-    sum_dz -= wt * (1 + cN * u) * cos_th;
+    sum_dz -= wt * (1 + cN * u) * cs;
   }
   ds = sum_ds;
   dz = sum_dz;
 }
 
-// Adaptive Gauss-Legendre: an interval's 16-point value is accepted when the 12-point rule agrees
-// with it to tol (both converge geometrically, the 16-point rule faster, so the 12-point rule's
-// error bounds the accepted value's), else the interval is halved (12 points: the pair that
-// needed the fewest evaluations on the quadrature-path states of the alpha2 = 1 reference line,
-// against 8, 10 and 20/12, 24/16, and the earlier halves-against-whole test); budget
-// caps the number of intervals (false when it runs out or depth 30 is reached).
+// Adaptive Gauss-Legendre on a rotation: an interval's 16-point value is accepted when the
+// 12-point rule agrees with it to tol (both converge geometrically, the 16-point rule faster, so
+// the 12-point rule's error bounds the accepted value's), else the interval is halved; budget caps
+// the number of intervals (false when it runs out or depth 30 is reached).
 template <class T>
-inline bool height_adaptive(const height_segment<T>& g, T a, T b, bool turn_a, bool turn_b, bool upper_a,
-                            bool upper_b, T t0, T tol, int depth, int& budget, T& ds, T& dz) {
+inline bool height_adaptive(const height_segment<T>& g, T a, T b, T t0, T tol, int depth, int& budget, T& ds,
+                            T& dz) {
   using std::fabs;
   T ds16, dz16, ds12, dz12;
-  height_gl<16>(g, a, b, turn_a, turn_b, upper_a, upper_b, t0, depth, ds16, dz16);
-  height_gl<12>(g, a, b, turn_a, turn_b, upper_a, upper_b, t0, depth, ds12, dz12);
+  const interval_ends<T> ends = make_interval_ends(t0, depth);
+  height_gl<16>(g, a, b, t0, depth, ends, ds16, dz16);
+  height_gl<12>(g, a, b, t0, depth, ends, ds12, dz12);
   --budget;
   const bool agree = fabs(ds16 - ds12) <= tol && fabs(dz16 - dz12) <= tol;
   if (agree || depth >= 30 || budget <= 0) {
@@ -277,8 +251,108 @@ inline bool height_adaptive(const height_segment<T>& g, T a, T b, bool turn_a, b
     return agree;
   }
   const T tm = t0 + std::ldexp(T(1), -depth - 1);
-  const bool ok_l = height_adaptive(g, a, b, turn_a, turn_b, upper_a, upper_b, t0, tol, depth + 1, budget, ds, dz);
-  const bool ok_r = height_adaptive(g, a, b, turn_a, turn_b, upper_a, upper_b, tm, tol, depth + 1, budget, ds, dz);
+  const bool ok_l = height_adaptive(g, a, b, t0, tol, depth + 1, budget, ds, dz);
+  const bool ok_r = height_adaptive(g, a, b, tm, tol, depth + 1, budget, ds, dz);
+  return ok_l && ok_r;
+}
+
+// Libration pieces in the pendulum's variable chi. In a libration window, psi = theta - phi runs
+// between the turning angles -pi - psi_top and psi_top; with omega = psi + pi/2 (mod 2 pi), the
+// distance from the window's centre, and h = psi_top + pi/2 its half-width, u = sin(psi) =
+// -cos(omega), up = -cos(h) and f3 = -b3 (up - u) = -b3 (cos(omega) - cos(h)) vanishes at both
+// turning angles. The pendulum's substitution sin(omega/2) = k sin(chi), k = sin(h/2)
+// (DLMF 22.19(i)), gives cos(omega) - cos(h) = 2 k^2 cos^2(chi) and d omega = 2 k cos(chi) d chi /
+// Delta with Delta = cos(omega/2) = sqrt(cos^2 chi + k'^2 sin^2 chi), so that
+//   ds = d theta / |theta'| = sqrt(EI/(-b3)) d chi / (Delta sqrt(f4))            (eq (8), R = f3 f4)
+// is smooth over the whole window: the turning angles are chi = +-pi/2, ordinary points, so a
+// piece that ends at or near one needs no special map (the integrand's nearest singularities are
+// at sin^2 chi = 1/k^2 and at f4 = 0, off the real interval; they close in on chi = +-pi/2 only
+// near a separatrix, k' -> 0). For an inextensible segment (f4 = 1) the length is
+// sqrt(EI/(-b3)) F(chi|k^2) (DLMF 19.2.4). k^2 = (1 + up)/2 and k'^2 = (1 - up)/2 =
+// cos_top^2/(2 (1 + up)) keep their relative accuracy near the separatrix (cos_top is formed from
+// the distance to it). Then u = 2 k^2 sin^2 chi - 1, cos(psi) = sin(omega) = 2 sin(omega/2) Delta
+// and cos(theta) = sin(omega) cos(phi) - u sin(phi): one sincos and two square roots per node.
+template <class T>
+struct libration_frame {
+  T k, kc2, scale;  // k = sin(h/2), k'^2 = cos^2(h/2), sqrt(EI/(-b3))
+};
+
+template <class T>
+inline libration_frame<T> make_libration_frame(const height_segment<T>& g) {
+  using std::sqrt;
+  return {sqrt((1 + g.up) / 2), g.cos_top * g.cos_top / (2 * (1 + g.up)), sqrt(g.EI / -g.b3)};
+}
+
+// chi of theta in the libration window around theta_mid: sin(chi) = sin(omega/2)/k and
+// k cos(chi) = sqrt(sin((h - omega)/2) sin((h + omega)/2)), from theta's distances to the window's
+// turning angles (exact differences to rounding, so chi stays accurate next to a turning angle).
+template <class T>
+inline T libration_chi(const height_segment<T>& g, T theta, T theta_mid) {
+  using std::atan2; using std::floor; using std::sin; using std::sqrt;
+  const T pi = seta_pi<T>();
+  const T kw = floor((theta_mid - g.phi + pi / 2) / (2 * pi) + T(0.5));
+  const T to_top = g.phi + g.psi_top + kw * 2 * pi - theta;           // h - omega
+  const T from_bottom = theta - (g.phi - pi - g.psi_top + kw * 2 * pi);  // h + omega
+  T p = sin(to_top / 2) * sin(from_bottom / 2);
+  if (!(p > 0)) p = 0;  // on (or, by rounding, beyond) a turning angle
+  return atan2(sin((from_bottom - to_top) / 4), sqrt(p));
+}
+
+// ds and dz over chi in [x0, x1] of a libration by n-point Gauss-Legendre.
+template <int n, class T>
+inline void height_gl_chi(const height_segment<T>& g, const libration_frame<T>& f, T x0, T x1, T& ds, T& dz) {
+  using std::fabs; using std::sqrt;
+  const auto& q = gauss_legendre<T, n>::get();
+  const T h = x1 - x0, cN = g.c * g.N;
+  T sum_ds = 0, sum_dz = 0;
+  for (int i = 0; i < n; ++i) {
+    const T chi = x0 + h * q.x[i];  // |chi| <= pi/2
+    T sc, cc;
+    first_quadrant_sincos(fabs(chi), sc, cc);
+    sc = std::copysign(sc, chi);
+    const T sw = f.k * sc;                      // sin(omega/2)
+    const T d2 = cc * cc + f.kc2 * (sc * sc);   // Delta^2 = cos^2(omega/2)
+    const T u = 2 * sw * sw - 1;                // sin(psi) = -cos(omega)
+    const T f4 = 1 + g.b4 * u;
+    if (!(f4 > 0)) continue;  // theta' vanishes there too: not reached by a solved state
+    const T cos_th = 2 * sw * sqrt(d2) * g.cos_phi - u * g.sin_phi;
+    const T wt = q.w[i] / sqrt(d2 * f4);
+    sum_ds += wt;
+    sum_dz -= wt * (1 + cN * u) * cos_th;
+  }
+  const T len = fabs(h) * f.scale;
+  ds = sum_ds * len;
+  dz = sum_dz * len;
+}
+
+// Adaptive Gauss-Legendre in chi, in two stages per interval: the 8-point value is accepted when
+// the 6-point rule agrees with it to tol, else the 16-point value when the 12-point rule does, else
+// the interval is halved (the lower rule of a pair bounds the error of the higher one, as in
+// height_adaptive). The first pair settles the short pieces next to a turning angle that most
+// non-monotone states have (in chi the integrand is smooth there); the second, near-separatrix
+// pieces whose integrand peaks at chi = +-pi/2 with a width of order k'.
+template <class T>
+inline bool height_adaptive_chi(const height_segment<T>& g, const libration_frame<T>& f, T x0, T x1, T tol,
+                                int depth, int& budget, T& ds, T& dz) {
+  using std::fabs;
+  T ds_hi, dz_hi, ds_lo, dz_lo;
+  height_gl_chi<8>(g, f, x0, x1, ds_hi, dz_hi);
+  height_gl_chi<6>(g, f, x0, x1, ds_lo, dz_lo);
+  bool agree = fabs(ds_hi - ds_lo) <= tol && fabs(dz_hi - dz_lo) <= tol;
+  if (!agree) {
+    height_gl_chi<16>(g, f, x0, x1, ds_hi, dz_hi);
+    height_gl_chi<12>(g, f, x0, x1, ds_lo, dz_lo);
+    agree = fabs(ds_hi - ds_lo) <= tol && fabs(dz_hi - dz_lo) <= tol;
+  }
+  --budget;
+  if (agree || depth >= 30 || budget <= 0) {
+    ds += ds_hi;
+    dz += dz_hi;
+    return agree;
+  }
+  const T xm = x0 + (x1 - x0) / 2;
+  const bool ok_l = height_adaptive_chi(g, f, x0, xm, tol, depth + 1, budget, ds, dz);
+  const bool ok_r = height_adaptive_chi(g, f, xm, x1, tol, depth + 1, budget, ds, dz);
   return ok_l && ok_r;
 }
 
@@ -325,13 +399,24 @@ inline bool height_walk(const height_segment<T>& g, T theta_s, T rate_s, T theta
     }
     return best;
   };
+  const bool libration = g.up < 1;
+  const libration_frame<T> lf = libration ? make_libration_frame(g) : libration_frame<T>{};
   auto piece = [&](T a, T b, bool turn_a, bool turn_b, bool upper_a, bool upper_b) {
     auto sub = [&](T from, T to) {
       if (from == to) return;
       const bool ta = turn_a && from == a, tb = turn_b && to == b;
       T ds = 0, dz = 0;
       int budget = 1000;
-      if (!height_adaptive(g, from, to, ta, tb, upper_a, upper_b, T(0), tol, 0, budget, ds, dz)) ok = false;
+      bool done;
+      if (libration) {
+        const T mid = from + (to - from) / 2;
+        const T xa = ta ? (upper_a ? pi / 2 : -pi / 2) : libration_chi(g, from, mid);
+        const T xb = tb ? (upper_b ? pi / 2 : -pi / 2) : libration_chi(g, to, mid);
+        done = height_adaptive_chi(g, lf, xa, xb, tol, 0, budget, ds, dz);
+      } else {
+        done = height_adaptive(g, from, to, T(0), tol, 0, budget, ds, dz);
+      }
+      if (!done) ok = false;
       s += ds;
       z += dz;
       visit(s, z);
