@@ -301,6 +301,54 @@ TEST_CASE("libration pieces in chi: length and height against the closed forms i
   CHECK(pieces == 400);
 }
 
+TEST_CASE("inextensible beams with turning points kept inside by their first integral: as the general path",
+          "[seta][admissibility][beam_bars]") {
+  // admissibility_imp takes an inextensible beam with turning points (and a spatula without) as
+  // monotone in z when its first integral bars theta = +-pi/2 on its path
+  // (beam_first_integral_bars_level); the general path finds the range from the turning angles
+  // (atan2, asin) instead. Both must give the same verdict, lowest point and strain, on random
+  // designs (EA1 infinite, and EA1 = 200, where the test is never taken) and on the alpha2 = 1
+  // reference line, whose upper part is such states.
+  std::uint64_t seed = 0xbea0013ULL;
+  int states = 0, barred = 0;
+  auto compare = [&](const gecko::TwoLevelSeta<double>& s, const std::vector<double>& ft) {
+    const auto d = gecko::detail::make_seta_params(s);
+    for (const auto& x : gecko::critical_line_at(s, ft)) {
+      if (!(x.Fn == x.Fn)) continue;
+      const gecko::seta_pose<double> p{x.Fn, x.Ft, x.theta_joint, x.theta_rate_base, x.theta_rate_joint,
+                                       x.turning_points_beam, x.turning_points_spatula,
+                                       std::numeric_limits<double>::quiet_NaN()};
+      const auto f = gecko::detail::make_pose_frame(d, p);
+      const bool taken = p.turning_points_beam > 0 && p.turning_points_spatula == 0 && !(d.c1 > 0) &&
+                         gecko::detail::beam_first_integral_bars_level(d, p, f);
+      const auto a = gecko::detail::admissibility_imp(d, p, std::numeric_limits<double>::infinity());
+      const auto g = gecko::detail::admissibility_general(d, p, f, std::numeric_limits<double>::infinity());
+      INFO("Ft " << x.Ft << " taken " << taken << " min_z " << a.min_z << " general " << g.min_z);
+      CHECK(a.admissible == g.admissible);
+      CHECK((a.min_z == g.min_z || (a.min_z != a.min_z && g.min_z != g.min_z)));
+      if (g.max_axial_strain == g.max_axial_strain) CHECK(std::fabs(a.max_axial_strain - g.max_axial_strain) <= 1e-15);
+      if (taken) CHECK(a.exact_fast_path);
+      ++states;
+      barred += taken;
+    }
+  };
+  for (int i = 0; i < 120; ++i) {
+    auto s = seta_test::sweep_box_design(seed);
+    if (i % 2) s.EA1 = 200;
+    std::vector<double> ft;
+    const double fm = gecko::ft_max(s);
+    for (int k = 0; k < 8; ++k) ft.push_back(fm * (-0.5 + 0.2 * k));
+    compare(s, ft);
+  }
+  const int random_barred = barred;
+  std::vector<double> line(200);
+  for (std::size_t i = 0; i < line.size(); ++i) line[i] = 9.9 * static_cast<double>(i) / 199.0;
+  compare(reference_with_alpha2(1.0), line);
+  INFO("states " << states << " taken " << barred << " (random designs " << random_barred << ")");
+  CHECK(random_barred > 50);
+  CHECK(barred - random_barred > 100);
+}
+
 TEST_CASE("injected states: a joint pushed below the substrate is caught", "[seta][admissibility]") {
   gecko::TwoLevelSeta<double> s;
   const auto st = gecko::critical_line_at(s, std::vector<double>{5.0})[0];

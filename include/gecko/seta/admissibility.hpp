@@ -18,7 +18,10 @@
 //     segment is that of its ends plus the turning angles reached inside (the solver's
 //     turning-point counts; the angles from the first integral, eq (8)): without turning points
 //     it costs a few comparisons and one sincos for the strain, with them one sincos and one atan2
-//     in all and one asin per segment (the other angles' sines by angle addition).
+//     in all and one asin per segment (the other angles' sines by angle addition). An inextensible
+//     beam with turning points needs neither where its first integral bars theta = +-pi/2 on its
+//     path (beam_first_integral_bars_level: the axial force's largest value on the way exceeds
+//     the first integral's constant).
 //   * Otherwise z is evaluated at every segment end and every point where dz/ds changes sign, by
 //     integrating dz = -(1 + T/EA) cos(theta) dtheta / theta' over the monotone pieces of theta
 //     (split at the turning points theta* where theta' = 0, eq (8)'s first integral
@@ -724,6 +727,36 @@ inline admissibility_result<T> admissibility_general(const seta_params<T>& d, co
   return finish(strain);
 }
 
+// An inextensible beam (c1 = 0) with turning points whose ends lie within [-pi/2, pi/2] stays
+// inside when its first integral (eq (8)) bars its path from theta = +-pi/2:
+// 1/2 EI1 theta'^2 = R(theta) = M1 - T(theta), with the axial force T = Ft sin(theta) -
+// Fn cos(theta) (= N sin(theta - phi)), and theta cannot pass where T > M1. theta is continuous
+// along the beam and monotone between turning points: with one turning point and theta'(0) > 0 it
+// rises from alpha1 to its turning angle and falls to theta1(l1), so it leaves [-pi/2, pi/2] only
+// if it rises through pi/2, which a point of [alpha1, pi/2] with T > M1 bars (theta'(0) < 0: a
+// point of [-pi/2, alpha1]); with two or more turning points both are needed. The largest T over
+// an interval shorter than pi comes from T and T' = Ft cos + Fn sin at its ends: N where T' falls
+// through 0 inside, else the larger end value. Then z is monotone along the beam (its stretch is
+// 1): no atan2, asin or quadrature is needed. M1 is formed at the base from theta1'(0); the test
+// demands a margin of 1e-9 of the terms' magnitudes (more than the state's own accuracy), so a
+// state next to the boundary takes the general path.
+template <class T>
+inline bool beam_first_integral_bars_level(const seta_params<T>& d, const seta_pose<T>& st, const pose_frame<T>& f) {
+  using std::fabs; using std::sqrt;
+  const T Ft = f.Ft, Fn = f.Fn, q = st.theta_rate_base;
+  const T N = sqrt(Fn * Fn + Ft * Ft);
+  const T bend = d.EI1 * q * q / 2;
+  const T t_base = Ft * d.s1 - Fn * d.co1, slope_base = Ft * d.co1 + Fn * d.s1;  // T, T' at alpha1
+  const T M1 = bend + t_base;
+  const T margin = T(1e-9) * (bend + fabs(t_base) + N);
+  // [alpha1, pi/2]: T(pi/2) = Ft, T'(pi/2) = Fn; [-pi/2, alpha1]: T(-pi/2) = -Ft, T'(-pi/2) = -Fn.
+  const T top = slope_base > 0 && Fn < 0 ? N : (t_base > Ft ? t_base : Ft);
+  const T bottom = -Fn > 0 && slope_base < 0 ? N : (t_base > -Ft ? t_base : -Ft);
+  const bool bars_top = top - M1 > margin, bars_bottom = bottom - M1 > margin;
+  if (f.n1 == 1) return q > 0 ? bars_top : (q < 0 ? bars_bottom : false);
+  return bars_top && bars_bottom;
+}
+
 // The check on design parameters d (1/EA as c1, c2) and a pose; strain_limit: +inf for none.
 template <class T>
 inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const seta_pose<T>& st, T strain_limit) {
@@ -734,8 +767,12 @@ inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const 
   const T half_pi = seta_pi<T>() / 2;
   const T Fn = f.Fn, Ft = f.Ft, beta = f.beta, th_j1 = f.th_j1;
   auto finish = [&](T strain) { return finish_admissibility(r, strain, f.z_tol, strain_limit); };
-  if (f.n1 == 0 && f.n2 == 0) {
-    // theta monotone on each segment: its range is that of the ends.
+  // theta's range on each segment is that of its ends when it has no turning point; on an
+  // inextensible beam with turning points, the ends bound it too where the first integral forbids
+  // theta = +-pi/2 (beam_first_integral_bars_level): then the beam stays strictly between.
+  bool beam_by_ends = f.n1 == 0;
+  if (f.n1 > 0 && f.n2 == 0 && !(d.c1 > 0)) beam_by_ends = beam_first_integral_bars_level(d, st, f);
+  if (beam_by_ends && f.n2 == 0) {
     const T lo1 = d.alpha1 < th_j1 ? d.alpha1 : th_j1, hi1 = d.alpha1 < th_j1 ? th_j1 : d.alpha1;
     const T lo2 = beta < half_pi ? beta : half_pi, hi2 = beta < half_pi ? half_pi : beta;
     if (lo1 >= -half_pi && hi1 <= half_pi && lo2 >= -half_pi && hi2 <= half_pi) {
