@@ -320,7 +320,7 @@ TEST_CASE("inextensible beams with turning points kept inside by their first int
                                        std::numeric_limits<double>::quiet_NaN()};
       const auto f = gecko::detail::make_pose_frame(d, p);
       const bool taken = p.turning_points_beam > 0 && p.turning_points_spatula == 0 && !(d.c1 > 0) &&
-                         gecko::detail::beam_first_integral_bars_level(d, p, f);
+                         gecko::detail::beam_first_integral_bars_level(d, p, f, std::sqrt(p.Fn * p.Fn + p.Ft * p.Ft));
       const auto a = gecko::detail::admissibility_imp(d, p, std::numeric_limits<double>::infinity());
       const auto g = gecko::detail::admissibility_general(d, p, f, std::numeric_limits<double>::infinity());
       INFO("Ft " << x.Ft << " taken " << taken << " min_z " << a.min_z << " general " << g.min_z);

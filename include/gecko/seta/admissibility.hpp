@@ -727,6 +727,17 @@ inline admissibility_result<T> admissibility_general(const seta_params<T>& d, co
   return finish(strain);
 }
 
+// The range [lo, hi] of the axial force T(theta) = Ft sin(theta) - Fn cos(theta) over an interval
+// [a, b] shorter than pi, from T and T' = Ft cos(theta) + Fn sin(theta) at its ends (T = N sin(psi),
+// T' = N cos(psi)): an interior maximum N where T' falls through 0, a minimum -N where it rises.
+template <class T>
+inline void axial_force_range(T Ta, T da, T Tb, T db, T N, T& lo, T& hi) {
+  lo = Ta < Tb ? Ta : Tb;
+  hi = Ta < Tb ? Tb : Ta;
+  if (da > 0 && db < 0) hi = N;
+  if (da < 0 && db > 0) lo = -N;
+}
+
 // An inextensible beam (c1 = 0) with turning points whose ends lie within [-pi/2, pi/2] stays
 // inside when its first integral (eq (8)) bars its path from theta = +-pi/2:
 // 1/2 EI1 theta'^2 = R(theta) = M1 - T(theta), with the axial force T = Ft sin(theta) -
@@ -741,17 +752,18 @@ inline admissibility_result<T> admissibility_general(const seta_params<T>& d, co
 // demands a margin of 1e-9 of the terms' magnitudes (more than the state's own accuracy), so a
 // state next to the boundary takes the general path.
 template <class T>
-inline bool beam_first_integral_bars_level(const seta_params<T>& d, const seta_pose<T>& st, const pose_frame<T>& f) {
-  using std::fabs; using std::sqrt;
+inline bool beam_first_integral_bars_level(const seta_params<T>& d, const seta_pose<T>& st, const pose_frame<T>& f,
+                                           T N) {
+  using std::fabs;
   const T Ft = f.Ft, Fn = f.Fn, q = st.theta_rate_base;
-  const T N = sqrt(Fn * Fn + Ft * Ft);
   const T bend = d.EI1 * q * q / 2;
   const T t_base = Ft * d.s1 - Fn * d.co1, slope_base = Ft * d.co1 + Fn * d.s1;  // T, T' at alpha1
   const T M1 = bend + t_base;
   const T margin = T(1e-9) * (bend + fabs(t_base) + N);
   // [alpha1, pi/2]: T(pi/2) = Ft, T'(pi/2) = Fn; [-pi/2, alpha1]: T(-pi/2) = -Ft, T'(-pi/2) = -Fn.
-  const T top = slope_base > 0 && Fn < 0 ? N : (t_base > Ft ? t_base : Ft);
-  const T bottom = -Fn > 0 && slope_base < 0 ? N : (t_base > -Ft ? t_base : -Ft);
+  T lo, top, bottom;
+  axial_force_range(t_base, slope_base, Ft, Fn, N, lo, top);
+  axial_force_range(-Ft, -Fn, t_base, slope_base, N, lo, bottom);
   const bool bars_top = top - M1 > margin, bars_bottom = bottom - M1 > margin;
   if (f.n1 == 1) return q > 0 ? bars_top : (q < 0 ? bars_bottom : false);
   return bars_top && bars_bottom;
@@ -770,16 +782,14 @@ inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const 
   // theta's range on each segment is that of its ends when it has no turning point; on an
   // inextensible beam with turning points, the ends bound it too where the first integral forbids
   // theta = +-pi/2 (beam_first_integral_bars_level): then the beam stays strictly between.
+  const T N = f.n2 == 0 ? sqrt(Fn * Fn + Ft * Ft) : T(0);  // used only where the spatula does not turn
   bool beam_by_ends = f.n1 == 0;
-  if (f.n1 > 0 && f.n2 == 0 && !(d.c1 > 0)) beam_by_ends = beam_first_integral_bars_level(d, st, f);
+  if (f.n1 > 0 && f.n2 == 0 && !(d.c1 > 0)) beam_by_ends = beam_first_integral_bars_level(d, st, f, N);
   if (beam_by_ends && f.n2 == 0) {
     const T lo1 = d.alpha1 < th_j1 ? d.alpha1 : th_j1, hi1 = d.alpha1 < th_j1 ? th_j1 : d.alpha1;
     const T lo2 = beta < half_pi ? beta : half_pi, hi2 = beta < half_pi ? half_pi : beta;
     if (lo1 >= -half_pi && hi1 <= half_pi && lo2 >= -half_pi && hi2 <= half_pi) {
-      // T's range from T at the ends and T' = Ft cos + Fn sin (T = N sin(psi), T' = N cos(psi)):
-      // an interior extremum where T' changes sign (the ranges are shorter than pi), a maximum N
-      // where T' falls through 0 as theta increases, a minimum -N where it rises.
-      const T N = sqrt(Fn * Fn + Ft * Ft);
+      // T's range from T and T' at the ends (the ranges are shorter than pi): axial_force_range.
       T t_min = 0, t_max = 0;  // over the extensible segments, scaled by their 1/EA
       auto seg_range = [&](T c, T th_a, T sa, T ca, T th_b, T sb, T cb) {
         if (!(c > 0)) return;
@@ -787,11 +797,8 @@ inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const 
           std::swap(sa, sb);
           std::swap(ca, cb);
         }
-        const T Ta = Ft * sa - Fn * ca, Tb = Ft * sb - Fn * cb;
-        const T da = Ft * ca + Fn * sa, db = Ft * cb + Fn * sb;
-        T lo = Ta < Tb ? Ta : Tb, hi = Ta < Tb ? Tb : Ta;
-        if (da > 0 && db < 0) hi = N;
-        if (da < 0 && db > 0) lo = -N;
+        T lo, hi;
+        axial_force_range(Ft * sa - Fn * ca, Ft * ca + Fn * sa, Ft * sb - Fn * cb, Ft * cb + Fn * sb, N, lo, hi);
         if (c * lo < t_min) t_min = c * lo;
         if (c * hi > t_max) t_max = c * hi;
       };
