@@ -33,6 +33,10 @@ Mechanism per design (thresholds on the last node, in this order):
   an earlier solver's).
 
     PYTHONPATH=python:. python3 -m validation.line_ends [--sample 200] [--seed 0] [--control 200] [--json F.json]
+    PYTHONPATH=python:. python3 -m validation.line_ends --lengths validation/rerun_10000.npz [--json F.json]
+
+``--lengths`` takes no trace: it reports, by status, how many elastic lengths l sqrt(N / EI) the
+longer segment of each state has (``lengths`` below).
 
 ``--control N`` traces N designs whose lines reach every requested Ft and reports how close they
 come to a separatrix anywhere along the line, for comparison with where the given-up lines stop
@@ -108,6 +112,31 @@ def control(n: int, seed: int, npz: str = STATES) -> dict:
     return {"designs": int(len(pick)), "of_designs": int(len(rows)), "seed": seed, "closest_approach": bands}
 
 
+def lengths(npz: str) -> dict:
+    """Each state's longer segment in elastic lengths, l sqrt(N / EI), by status, over a states file.
+
+    A tensioned segment many elastic lengths long is straight and aligned with the force except
+    in boundary layers of about one elastic length at its ends: its path passes the saddle at a
+    separatrix distance that shrinks like exp(-L sqrt(N / EI)) (about one elastic length per
+    factor e), and the solver's unknowns (Fn, beta and the end rates) resolve that distance only
+    down to the rounding of the first integral's constant, which they form by cancellation.
+    N = hypot(Fn, Ft) where the file has Fn (a ``recheck --save`` file: the states the solver
+    solved), else |Ft|, a lower bound (N >= |Ft|)."""
+    z = np.load(npz)
+    P, FT, ST = z["P"], z["FT"], z["status"]
+    Fn = z["Fn"] if "Fn" in z.files else np.full(FT.shape, np.nan)
+    N = np.where(np.isfinite(Fn), np.hypot(Fn, FT), np.abs(FT))
+    e = np.maximum(P[:, 4:5] * np.sqrt(N / P[:, 0:1]), P[:, 5:6] * np.sqrt(N / P[:, 1:2]))
+    out = {"npz": npz, "N": "hypot(Fn, Ft) where Fn is known, else |Ft| (a lower bound)", "by_status": {}}
+    for s in np.unique(ST):
+        v = e[ST == s]
+        out["by_status"][str(int(s))] = {
+            "states": int(v.size), "max": round(float(v.max()), 1),
+            "percentiles_50_90_99": [round(float(x), 1) for x in np.percentile(v, [50, 90, 99])],
+            "percent_above": {str(t): round(100.0 * float(np.mean(v > t)), 1) for t in (10, 20, 30, 40, 60, 100)}}
+    return out
+
+
 def mechanism(end: str, node: dict | None) -> str:
     if end not in GIVEN_UP:
         return "now_reached"
@@ -172,10 +201,22 @@ def main(argv=None):
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--npz", default=STATES)
     ap.add_argument("--json", default=None)
+    ap.add_argument("--lengths", default=None, metavar="NPZ",
+                    help="only: each state's longer segment in elastic lengths by status over the states "
+                         "file NPZ (a recheck --save file, or the campaign's states)")
     ap.add_argument("--control", type=int, default=0, metavar="N",
                     help="also trace N designs without a status-6 state: their closest approach to a "
                          "separatrix over the whole line")
     args = ap.parse_args(argv)
+    if args.lengths:
+        res = lengths(args.lengths)
+        for k, v in res["by_status"].items():
+            print(f"status {k}: {v['states']} states, max {v['max']}, percent above {v['percent_above']}")
+        if args.json:
+            with open(args.json, "w") as f:
+                json.dump(res, f, indent=1)
+                f.write("\n")
+        return
     res = run(args.sample, args.seed, args.npz)
     if args.control:
         res["control"] = control(args.control, args.seed + 1, args.npz)

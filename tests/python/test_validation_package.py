@@ -122,6 +122,25 @@ def test_line_ends_first_integrals_match_the_solved_rates():
     assert math.isfinite(node["spatula_elastic_lengths"])
 
 
+def test_line_lengths_counts_elastic_lengths_by_status(tmp_path):
+    # line_ends.lengths: the longer segment's l sqrt(N / EI), N = hypot(Fn, Ft) where Fn is known,
+    # else the lower bound |Ft|; here a beam (EI1 = 1, l1 = 1) and a spatula (EI2 = 1e-2, l2 = 0.1)
+    # make the spatula's count l2 sqrt(N / EI2) = sqrt(N) the same as the beam's.
+    from validation import line_ends
+    P = np.array([[1.0, 1e-2, np.inf, np.inf, 1.0, 0.1, 0.5, 0.5, 1.0]] * 2)
+    FT = np.array([[0.0, 20.0, 400.0], [-2500.0, 0.0, 900.0]])
+    Fn = np.array([[-4.0, -15.0, np.nan], [np.nan, -9.0, np.nan]])
+    status = np.array([[0, 0, 6], [6, 7, 1]], dtype=np.int8)
+    f = tmp_path / "states.npz"
+    np.savez(f, P=P, FT=FT, Fn=Fn, status=status)
+    r = line_ends.lengths(str(f))["by_status"]
+    assert r["0"]["states"] == 2 and r["0"]["max"] == 5.0  # sqrt(hypot(-15, 20))
+    assert r["7"]["max"] == 3.0
+    assert r["6"]["states"] == 2 and r["6"]["max"] == 50.0  # sqrt(|-2500|), the lower bound
+    assert r["6"]["percent_above"]["30"] == 50.0 and r["6"]["percent_above"]["10"] == 100.0
+    assert r["1"]["max"] == 30.0 and r["1"]["percent_above"]["30"] == 0.0
+
+
 def test_hermite_minimum_is_exact_for_a_cubic():
     from validation import verify
     # z(t) = (t - 0.3)^2 (t + 1) - 0.05 on [0, 1]: minimum at t = 0.3 (z = -0.05), inside the step
