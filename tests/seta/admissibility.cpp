@@ -349,6 +349,59 @@ TEST_CASE("inextensible beams with turning points kept inside by their first int
   CHECK(barred - random_barred > 100);
 }
 
+TEST_CASE("spatulas with one turning point kept inside by their first integral: as the general path",
+          "[seta][admissibility][spatula_bars]") {
+  // admissibility_imp takes a spatula with one turning point and beta <= pi/2 as monotone in z
+  // when its first integral bars theta = -pi/2 on its way down (spatula_first_integral_bars_level);
+  // the general path finds the range from the turning angle (atan2, asin) instead. Both must give
+  // the same verdict, lowest point and strain (T's range from T+ and T' at the turning angle) on
+  // random designs (EA2 finite, EA2 infinite in every third) and on the alpha2 = 1 reference line.
+  std::uint64_t seed = 0x5ba7013ULL;
+  int states = 0, taken_count = 0, turning = 0;
+  auto compare = [&](const gecko::TwoLevelSeta<double>& s, const std::vector<double>& ft) {
+    const auto d = gecko::detail::make_seta_params(s);
+    for (const auto& x : gecko::critical_line_at(s, ft)) {
+      if (!(x.Fn == x.Fn) || x.turning_points_spatula == 0) continue;
+      const gecko::seta_pose<double> p{x.Fn, x.Ft, x.theta_joint, x.theta_rate_base, x.theta_rate_joint,
+                                       x.turning_points_beam, x.turning_points_spatula,
+                                       std::numeric_limits<double>::quiet_NaN()};
+      const auto f = gecko::detail::make_pose_frame(d, p);
+      double lo = 0, hi = 0;
+      const bool taken = gecko::detail::spatula_first_integral_bars_level(
+          d, p, f, std::sqrt(p.Fn * p.Fn + p.Ft * p.Ft), std::sin(p.theta_joint), std::cos(p.theta_joint), lo, hi);
+      const auto a = gecko::detail::admissibility_imp(d, p, std::numeric_limits<double>::infinity());
+      const auto g = gecko::detail::admissibility_general(d, p, f, std::numeric_limits<double>::infinity());
+      INFO("Ft " << x.Ft << " taken " << taken << " min_z " << a.min_z << " general " << g.min_z << " strain "
+                 << a.max_axial_strain << " general " << g.max_axial_strain);
+      CHECK(a.admissible == g.admissible);
+      CHECK((a.min_z == g.min_z || (a.min_z != a.min_z && g.min_z != g.min_z)));
+      if (g.max_axial_strain == g.max_axial_strain)
+        CHECK(std::fabs(a.max_axial_strain - g.max_axial_strain) <= 1e-15 * (1 + g.max_axial_strain));
+      // where the test is taken, the general path must find theta inside [-pi/2, pi/2] as well
+      if (taken) CHECK(g.exact_fast_path);
+      ++states;
+      taken_count += taken;
+    }
+  };
+  for (int i = 0; i < 120; ++i) {
+    auto s = seta_test::sweep_box_design(seed);
+    if (i % 3 == 0) s.EA2 = std::numeric_limits<double>::infinity();
+    std::vector<double> ft;
+    const double fm = std::isinf(s.EA2) ? 3 * std::sqrt(s.EI1 * s.w) / s.l1 : gecko::ft_max(s);
+    for (int k = 0; k < 8; ++k) ft.push_back(fm * (-0.5 + 0.2 * k));
+    compare(s, ft);
+  }
+  const int random_taken = taken_count;
+  turning = states;
+  std::vector<double> line(200);
+  for (std::size_t i = 0; i < line.size(); ++i) line[i] = 9.9 * static_cast<double>(i) / 199.0;
+  compare(reference_with_alpha2(1.0), line);
+  INFO("spatula-turning states " << states << " (random designs " << turning << "), taken " << taken_count
+                                 << " (random designs " << random_taken << ")");
+  CHECK(random_taken > 20);
+  CHECK(taken_count - random_taken > 30);
+}
+
 TEST_CASE("injected states: a joint pushed below the substrate is caught", "[seta][admissibility]") {
   gecko::TwoLevelSeta<double> s;
   const auto st = gecko::critical_line_at(s, std::vector<double>{5.0})[0];

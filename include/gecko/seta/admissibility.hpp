@@ -21,8 +21,10 @@
 //     in all and one asin per segment (the other angles' sines by angle addition). An inextensible
 //     beam with turning points needs neither where its first integral bars theta = +-pi/2 on its
 //     path (beam_first_integral_bars_level: the axial force's largest value on the way exceeds
-//     the first integral's constant).
-//   * Otherwise z is evaluated at every segment end and every point where dz/ds changes sign, by
+//     the first integral's constant), nor a spatula with one turning point where its first
+//     integral bars -pi/2 on its way down (spatula_first_integral_bars_level).
+//   * Otherwise z is evaluated at every segment end and every point where dz/ds turns from
+//     negative to positive (the candidates for its minimum; not where z has a maximum), by
 //     integrating dz = -(1 + T/EA) cos(theta) dtheta / theta' over the monotone pieces of theta
 //     (split at the turning points theta* where theta' = 0, eq (8)'s first integral
 //     1/2 EI theta'^2 = M - N sin(psi) - N^2 sin^2(psi)/(2 EA), psi = theta - phi, gives theta' as
@@ -383,7 +385,10 @@ inline bool height_walk(const height_segment<T>& g, T theta_s, T rate_s, T theta
   bool ok = true;
   // z can only turn where dz/ds = -(1 + T/EA) cos(theta) changes sign: at theta = pi/2 + j pi, and
   // where the stretch 1 + c N sin(theta - phi) vanishes (a compression of EA or more; c N > 1):
-  // theta = phi - asin(1/(c N)) + 2 j pi and phi + pi + asin(1/(c N)) + 2 j pi.
+  // theta = phi - asin(1/(c N)) + 2 j pi and phi + pi + asin(1/(c N)) + 2 j pi. With a positive
+  // stretch only the crossings where z turns from falling to rising are candidates for its
+  // minimum: theta rising through pi/2 (mod 2 pi) or falling through -pi/2 (mod 2 pi); at the
+  // others z has a maximum and the piece is not split there (its integrand is smooth across).
   const bool stretch_zeros = g.c * g.N > 1;
   const T w0 = stretch_zeros ? std::asin(1 / (g.c * g.N)) : T(0);
   auto next_split = [&](T x, bool up) {  // the nearest split point strictly beyond x
@@ -393,7 +398,7 @@ inline bool height_walk(const height_segment<T>& g, T theta_s, T rate_s, T theta
       if (up ? !(c > x) : !(c < x)) c += up ? period : -period;  // x itself a member, to rounding
       return c;
     };
-    T best = member(pi / 2, pi);
+    T best = stretch_zeros ? member(pi / 2, pi) : member(up ? pi / 2 : -pi / 2, two_pi);
     if (stretch_zeros) {
       for (const T o : {g.phi - w0, g.phi + pi + w0}) {
         const T c = member(o, two_pi);
@@ -769,6 +774,42 @@ inline bool beam_first_integral_bars_level(const seta_params<T>& d, const seta_p
   return bars_top && bars_bottom;
 }
 
+// A spatula with one turning point and beta <= pi/2 stays inside [-pi/2, pi/2] when its first
+// integral (eq (8)) bars theta = -pi/2 on its way down. With one turning point theta'(l1) < 0: theta
+// falls from beta to its turning angle theta_min and rises into the contact edge at pi/2 (where
+// theta' > 0, eq (3)), so its range is [theta_min, pi/2]. With the axial force T = Ft sin(theta) -
+// Fn cos(theta), 1/2 EI2 theta'^2 = R = M2 - T - c2 T^2/2 is negative where T exceeds
+// T+ = 2 M2 / (1 + sqrt(1 + 2 c2 M2)) (= N u+, gecko/seta/elastica_segment.hpp), so a point of
+// [-pi/2, beta] with T > T+ stops the fall before -pi/2 (R(beta) = EI2 theta'(l1)^2/2 > 0). Then
+// T's range over [theta_min, pi/2], for the strain, follows from its ends without the turning angle
+// itself: T = T+ and T' = -N cos(psi_top) <= 0 at theta_min (T falls from T+ as theta rises from
+// there), Ft and Fn at pi/2. M2 is formed from the joint's rate as on the general path; the test
+// demands a margin of 1e-9 of its terms' magnitudes, so a state next to the boundary takes the
+// general path. sb, cb: sin and cos of beta. False: not shown inside (lo, hi unset).
+template <class T>
+inline bool spatula_first_integral_bars_level(const seta_params<T>& d, const seta_pose<T>& st, const pose_frame<T>& f,
+                                              T N, T sb, T cb, T& lo, T& hi) {
+  using std::fabs; using std::sqrt;
+  const T Ft = f.Ft, Fn = f.Fn, p = st.theta_rate_joint;
+  if (f.n2 != 1 || !(p < 0) || !(N > 0) || !(f.beta <= seta_pi<T>() / 2)) return false;
+  const T t_beta = Ft * sb - Fn * cb, slope_beta = Ft * cb + Fn * sb;  // T, T' at beta
+  const T ub = t_beta / N;                                            // sin(beta - phi)
+  const T bend = d.EI2 * p * p / 2, axial = d.c2 * N * N * ub * ub / 2;
+  const T M2 = bend + N * ub + axial;
+  const T margin = T(1e-9) * (bend + N * fabs(ub) + axial + N);
+  const T root = 1 + 2 * d.c2 * M2;
+  if (!(root > 0)) return false;
+  const T t_plus = 2 * M2 / (1 + sqrt(root));
+  const T up = t_plus / N;
+  if (!(up < 1 && up > -1)) return false;  // no libration: one turning point is not this orbit
+  // [-pi/2, beta]: T(-pi/2) = -Ft, T'(-pi/2) = -Fn.
+  T low, top;
+  axial_force_range(-Ft, -Fn, t_beta, slope_beta, N, low, top);
+  if (!(top - t_plus > margin)) return false;
+  axial_force_range(t_plus, -N * sqrt((1 - up) * (1 + up)), Ft, Fn, N, lo, hi);
+  return true;
+}
+
 // The check on design parameters d (1/EA as c1, c2) and a pose; strain_limit: +inf for none.
 template <class T>
 inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const seta_pose<T>& st, T strain_limit) {
@@ -782,10 +823,14 @@ inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const 
   // theta's range on each segment is that of its ends when it has no turning point; on an
   // inextensible beam with turning points, the ends bound it too where the first integral forbids
   // theta = +-pi/2 (beam_first_integral_bars_level): then the beam stays strictly between.
-  const T N = f.n2 == 0 ? sqrt(Fn * Fn + Ft * Ft) : T(0);  // used only where the spatula does not turn
+  // A spatula with one turning point is inside where its first integral bars -pi/2
+  // (spatula_first_integral_bars_level); more turning points take it past pi/2 (a libration
+  // window that holds the edge's pi/2 inside, left and re-entered).
+  const bool spatula_candidate = f.n2 == 0 || (f.n2 == 1 && st.theta_rate_joint < 0);
+  const T N = sqrt(Fn * Fn + Ft * Ft);
   bool beam_by_ends = f.n1 == 0;
-  if (f.n1 > 0 && f.n2 == 0 && !(d.c1 > 0)) beam_by_ends = beam_first_integral_bars_level(d, st, f, N);
-  if (beam_by_ends && f.n2 == 0) {
+  if (f.n1 > 0 && spatula_candidate && !(d.c1 > 0)) beam_by_ends = beam_first_integral_bars_level(d, st, f, N);
+  if (beam_by_ends && spatula_candidate) {
     const T lo1 = d.alpha1 < th_j1 ? d.alpha1 : th_j1, hi1 = d.alpha1 < th_j1 ? th_j1 : d.alpha1;
     const T lo2 = beta < half_pi ? beta : half_pi, hi2 = beta < half_pi ? half_pi : beta;
     if (lo1 >= -half_pi && hi1 <= half_pi && lo2 >= -half_pi && hi2 <= half_pi) {
@@ -803,15 +848,25 @@ inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const 
         if (c * hi > t_max) t_max = c * hi;
       };
       T sb = 0, cb = 0;
-      if (d.c1 > 0 || d.c2 > 0) {
+      if (d.c1 > 0 || d.c2 > 0 || f.n2 > 0) {
         sb = sin(beta);
         cb = cos(beta);
       }
+      T lo_s = 0, hi_s = 0;  // T's range on a turning spatula
+      if (f.n2 > 0 && !spatula_first_integral_bars_level(d, st, f, N, sb, cb, lo_s, hi_s))
+        return admissibility_general(d, st, f, strain_limit);
       if (d.c1 > 0) {
         const T sj = sb * d.co2 - cb * d.s2, cj = cb * d.co2 + sb * d.s2;
         seg_range(d.c1, d.alpha1, d.s1, d.co1, th_j1, sj, cj);
       }
-      if (d.c2 > 0) seg_range(d.c2, beta, sb, cb, half_pi, T(1), T(0));
+      if (d.c2 > 0) {
+        if (f.n2 == 0) {
+          seg_range(d.c2, beta, sb, cb, half_pi, T(1), T(0));
+        } else {
+          if (d.c2 * lo_s < t_min) t_min = d.c2 * lo_s;
+          if (d.c2 * hi_s > t_max) t_max = d.c2 * hi_s;
+        }
+      }
       // z decreases along s only while the stretch 1 + T/EA is positive (tension, T > 0, never
       // stops it; a compression of EA or more would).
       if (t_min > -1) {
