@@ -17,6 +17,9 @@ The old side may also be the committed record of the 10,000-design campaign
 ``campaign_solved_bitwise_equal`` says whether every state the campaign solved and verified still
 has its campaign's Fn and beta bit for bit.
 
+Where both files have the admissibility check's lowest heights (``min_z``), ``heights`` compares
+them on the states both solved (a change of the check itself shows there, not in Fn or beta).
+
 "Silently wrong" uses the campaign's threshold and conclusiveness rule (campaign.classify).
 """
 from __future__ import annotations
@@ -46,6 +49,26 @@ def changed_states(old: dict, new: dict) -> dict:
     return dict(newly_solved=newly, moved=both & (moved_fn | moved_beta))
 
 
+def height_changes(old: dict, new: dict) -> dict | None:
+    """The admissibility check's lowest heights (``min_z``) of the states both files solved:
+    NaN (check not made) in one file only, the largest change relative to l1 + l2, how many changed
+    at all, and the verdicts (crossing below -1e-12 (l1 + l2), the library's threshold) that flip.
+    None when a file has no heights (the campaign's record)."""
+    if "min_z" not in old or "min_z" not in new:
+        return None
+    both = campaign.solved(new["status"]) & campaign.solved(old["status"])
+    L = (new["P"][:, 4] + new["P"][:, 5])[:, None] * np.ones(new["status"].shape)
+    z0, z1 = old["min_z"][both], new["min_z"][both]
+    L = L[both]
+    finite = np.isfinite(z0) & np.isfinite(z1)
+    d = np.abs(z1[finite] - z0[finite]) / L[finite]
+    cross0, cross1 = z0[finite] < -1e-12 * L[finite], z1[finite] < -1e-12 * L[finite]
+    return dict(solved_in_both=int(both.sum()), checked_in_both=int(finite.sum()),
+                nan_in_one_only=int((np.isnan(z0) != np.isnan(z1)).sum()),
+                max_rel_change=float(d.max()) if d.size else None, changed=int((d != 0).sum()),
+                verdicts_flipped=int((cross0 != cross1).sum()))
+
+
 def run(old_path: str, new_path: str) -> dict:
     old, new = dict(np.load(old_path)), dict(np.load(new_path))
     if old["P"].shape != new["P"].shape or not (np.array_equal(old["P"], new["P"])
@@ -70,6 +93,7 @@ def run(old_path: str, new_path: str) -> dict:
                               for r, c in zip(rows[:20], cols[:20])],
                 max_rel_dFn_conclusive=float(np.nanmax(np.where(conclusive, cl["rel"], np.nan)))
                 if conclusive.any() else None,
+                heights=height_changes(old, new),
                 seconds=round(time.time() - t0, 1))
 
 

@@ -189,3 +189,19 @@ def test_admissibility_shot_confirms_min_z_and_flags_injected_errors():
     assert r["unchecked"][0].tolist() == [True, True, False]
     assert r["unchecked_above"][0].tolist() == [True, False, False]
     assert r["unchecked_crossing"][0].tolist() == [False, True, False]
+
+
+def test_changed_compares_lowest_heights_of_states_both_solved():
+    # validation/changed.py: min_z of the states solved in both files, relative to l1 + l2; a NaN in
+    # one file only and a crossing verdict (below -1e-12 (l1 + l2)) that flips are counted.
+    from validation import changed
+    P = np.array([[1.0, 0.1, np.inf, 50.0, 1.0, 0.1, 0.5, 0.5, 1.0]])  # l1 + l2 = 1.1
+    status = np.array([[0, 0, 7, 0, 1]], dtype=np.int8)
+    old = {"P": P, "status": status, "min_z": np.array([[0.0, -1.1e-3, -2.2e-13, np.nan, np.nan]])}
+    new = {"P": P, "status": status.copy(), "min_z": np.array([[0.0, -1.1e-3 + 1.1e-15, -2.2e-12, 0.0, -5.0]])}
+    r = changed.height_changes(old, new)
+    assert r["solved_in_both"] == 4 and r["checked_in_both"] == 3
+    assert r["nan_in_one_only"] == 1
+    assert r["changed"] == 2 and r["verdicts_flipped"] == 1
+    assert abs(r["max_rel_change"] - (2.2e-12 - 2.2e-13) / 1.1) < 1e-20
+    assert changed.height_changes({"status": status}, new) is None
