@@ -304,12 +304,12 @@ TEST_CASE("states read off a line by chord steps: Newton's states, and Newton wh
       const std::size_t near = f <= 0.5 ? i : i + 1, other = near == i ? i + 1 : i;
       const double w = (mu - line.nodes[near].Ft) / (line.nodes[other].Ft - line.nodes[near].Ft);
       const System::mat E = w * (line.jacobians[other] - line.jacobians[near]);
-      const Eigen::PartialPivLU<System::mat> lu(line.jacobians[near]);
+      const System::mat Jinv = line.jacobians[near].partialPivLu().inverse();
       System::vec z = guess;
       double u14[2];
       int its = 0;
       INFO("node " << i << " fraction " << f);
-      REQUIRE(gecko::detail::chord_solve(sys, lu, E, z, mu, line.plans[near], 1e-12, its, u14));
+      REQUIRE(gecko::detail::chord_solve(sys, Jinv, E, z, mu, line.plans[near], 1e-12, its, u14));
       CHECK(sys.plan_valid(line.plans[near], z, mu, u14));
       CHECK(its <= 4);
       auto plan = line.plans[near];
@@ -324,7 +324,7 @@ TEST_CASE("states read off a line by chord steps: Newton's states, and Newton wh
       // and contract by ~0.9, not by the quarter the chord asks for.
       System::vec zb = guess;
       int bad_its = 0;
-      CHECK_FALSE(gecko::detail::chord_solve(sys, lu, System::mat(-0.9 * line.jacobians[near]), zb, mu,
+      CHECK_FALSE(gecko::detail::chord_solve(sys, Jinv, System::mat(-0.9 * line.jacobians[near]), zb, mu,
                                               line.plans[near], 1e-12, bad_its, u14));
       CHECK(zb == guess);
     }

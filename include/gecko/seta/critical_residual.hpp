@@ -202,6 +202,21 @@ inline bool seta_plan_valid(const seta_params<T>& d, const seta_plan& plan, T Fn
          segment_plan_valid(g.spatula, plan.spatula, g.psi_s2, g.X3_s2, g.psi_e2, g.X3_e2, u14[1], g.h2);
 }
 
+// seta_plan_valid and, where the plan is valid, seta_turning_points on one geometry (a state read
+// off the line needs both at the same point).
+template <class Policy, bool E1, bool E2, class T>
+inline bool seta_plan_valid_turning_points(const seta_params<T>& d, const seta_plan& plan, T Fn, T beta, T p, T q,
+                                           T Ft, T edge, const T u14[2], int& beam, int& spatula) {
+  const bool angles = !plan.beam.direct || !plan.spatula.direct;
+  const auto g = make_seta_geometry<E1, E2>(d, Fn, beta, p, q, Ft, edge, angles);
+  if (!segment_plan_valid(g.beam, plan.beam, g.psi_s1, g.X3_s1, g.psi_e1, g.X3_e1, u14[0], g.h1) ||
+      !segment_plan_valid(g.spatula, plan.spatula, g.psi_s2, g.X3_s2, g.psi_e2, g.X3_e2, u14[1], g.h2))
+    return false;
+  beam = segment_turning_points<Policy>(g.beam, plan.beam, g.psi_s1, g.X3_s1, g.psi_e1, g.X3_e1, g.h1);
+  spatula = segment_turning_points<Policy>(g.spatula, plan.spatula, g.psi_s2, g.X3_s2, g.psi_e2, g.X3_e2, g.h2);
+  return true;
+}
+
 template <class Policy, bool E1, bool E2, class T>
 inline void seta_turning_points(const seta_params<T>& d, const seta_plan& plan, T Fn, T beta, T p, T q, T Ft,
                                 T edge, int& beam, int& spatula) {

@@ -224,6 +224,12 @@ struct fiber_system {
                                           (seta_pi<T>() / 2 - alpha) / 2);
     spatula = 0;
   }
+  bool plan_valid_turning_points(const plan_type& p, const vec& z, T mu, const T u14[2], int& beam,
+                                 int& spatula) const {
+    if (!plan_valid(p, z, mu, u14)) return false;
+    turning_points(p, z, mu, beam, spatula);
+    return true;
+  }
 };
 
 template <class Policy, bool E, class T>

@@ -140,10 +140,12 @@ inline void apply_admissibility(const seta_system<T, Policy, E1, E2>& sys, criti
   if (!a.admissible) r.status = critical_status::inadmissible;
 }
 
+// turning: the state's turning points (beam, spatula) where the caller has them already
+// (System::plan_valid_turning_points), else null.
 template <class System, class T>
 inline critical_state<T> state_from(const System& sys, const typename System::vec& z, T Ft, T mu,
                                     const typename System::plan_type& plan, critical_status status,
-                                    int iterations) {
+                                    int iterations, const int* turning = nullptr) {
   critical_state<T> r;
   r.Ft = Ft;
   r.status = status;
@@ -153,7 +155,12 @@ inline critical_state<T> state_from(const System& sys, const typename System::ve
     r.theta_joint = sys.theta_joint(z);
     r.theta_rate_joint = sys.rate_joint(z);
     r.theta_rate_base = sys.rate_base(z);
-    sys.turning_points(plan, z, mu, r.turning_points_beam, r.turning_points_spatula);
+    if (turning) {
+      r.turning_points_beam = turning[0];
+      r.turning_points_spatula = turning[1];
+    } else {
+      sys.turning_points(plan, z, mu, r.turning_points_beam, r.turning_points_spatula);
+    }
     apply_admissibility(sys, r);
   }
   return r;

@@ -24,8 +24,9 @@ namespace detail {
 // derivatives of every Carlson form). The matrix is the Jacobian
 // interpolated linearly between the two nodes around mu, J = J_near + E (E = w (J_other -
 // J_near), w the fraction of the way to the other node), applied to first order, (J_near + E)^-1
-// ~ J_near^-1 - J_near^-1 E J_near^-1: two solves with the near node's factorisation lu, no
-// factorisation per state. From the line's cubic Hermite guess (accurate to ~1e-7) the steps
+// ~ J_near^-1 - J_near^-1 E J_near^-1: two products with the near node's inverse Jacobian Jinv
+// (formed once per node from its LU factorisation; 4x4 products cost no divisions, where two
+// triangular solves per step would), no factorisation per state. From the line's cubic Hermite guess (accurate to ~1e-7) the steps
 // contract by theta ~ omega |z - z_line(mu)| plus the interpolation's error. A step is accepted
 // as the last one when it is below tol and the contraction measured on it, ||dz_k|| /
 // ||dz_k-1||, is at most 1/4: the error left after it is then below theta/(1 - theta) ||dz_k||
@@ -35,7 +36,7 @@ namespace detail {
 // Newton from the guess). evaluations: residuals evaluated; u14 as the last one left it (for
 // plan_valid).
 template <class System, class T>
-inline bool chord_solve(const System& sys, const Eigen::PartialPivLU<typename System::mat>& lu,
+inline bool chord_solve(const System& sys, const typename System::mat& Jinv,
                         const typename System::mat& E, typename System::vec& z, T mu,
                         const typename System::plan_type& plan, T tol, int& evaluations, T u14[2]) {
   using vec = typename System::vec;
@@ -44,8 +45,8 @@ inline bool chord_solve(const System& sys, const Eigen::PartialPivLU<typename Sy
   for (int k = 0; k < 8; ++k) {
     ++evaluations;
     if (!sys.residual(x, mu, plan, F, u14)) return false;
-    vec dx = -lu.solve(F);
-    dx -= lu.solve(E * dx);
+    vec dx = -(Jinv * F);
+    dx -= Jinv * (E * dx);
     if (!dx.allFinite()) return false;
     const T nd = sys.step_norm(dx, x);
     if (k > 0 && !(nd <= previous / 4)) return false;
@@ -75,10 +76,10 @@ inline void evaluate_line(const System& sys, const traced_line<System>& line, co
   if (line.end == line_end::unsupported_state) beyond = critical_status::unsupported_state;
   else if (line.end == line_end::no_convergence || line.end == line_end::max_points || line.end == line_end::stalled)
     beyond = critical_status::not_reached;
-  // The nodes' Jacobians, factorised when a state first needs them (chord_solve).
+  // The nodes' inverse Jacobians, formed when a state first needs them (chord_solve).
   const bool chord = line.jacobians.size() == all.size();
-  std::vector<Eigen::PartialPivLU<typename System::mat>> lus(chord ? all.size() : 0);
-  std::vector<char> factorised(lus.size(), 0);
+  std::vector<typename System::mat> inverses(chord ? all.size() : 0);
+  std::vector<char> factorised(inverses.size(), 0);
   std::vector<T> run_lo(all.size()), run_hi(all.size());
   for (std::size_t i = 0; i < all.size(); ++i) {
     run_lo[i] = i ? std::min(run_lo[i - 1], all[i].Ft) : all[i].Ft;
@@ -132,17 +133,22 @@ inline void evaluate_line(const System& sys, const traced_line<System>& line, co
       auto plan = line.plans[near];
       int its = 0;
       critical_status st = critical_status::not_converged;
+      int turning[2] = {0, 0};
+      bool have_turning = false;  // the chord steps' plan check counted them (same z, same plan)
       if (chord) {
         if (!factorised[near]) {
-          lus[near].compute(line.jacobians[near]);
+          inverses[near] = line.jacobians[near].partialPivLu().inverse();
           factorised[near] = 1;
         }
         const std::size_t other = near == i ? i + 1 : i;
         const T w = (target - nodes[near].Ft) / (nodes[other].Ft - nodes[near].Ft);
         const typename System::mat E = w * (line.jacobians[other] - line.jacobians[near]);
         T u14[2] = {1, 1};
-        if (chord_solve(sys, lus[near], E, z, target, plan, tol, its, u14) && sys.plan_valid(plan, z, target, u14))
+        if (chord_solve(sys, inverses[near], E, z, target, plan, tol, its, u14) &&
+            sys.plan_valid_turning_points(plan, z, target, u14, turning[0], turning[1])) {
           st = critical_status::converged;
+          have_turning = true;
+        }
       }
       // Newton from the guess where the chord steps did not settle it. omega: the line's
       // Lipschitz estimate with a safety factor of 4 (early acceptance of the first Newton step,
@@ -177,7 +183,7 @@ inline void evaluate_line(const System& sys, const traced_line<System>& line, co
         plan = line.plans[i + 1];
         st = critical_status::converged;
       }
-      r = state_from(sys, z, Ft[idx], target, plan, st, its);
+      r = state_from(sys, z, Ft[idx], target, plan, st, its, have_turning ? turning : nullptr);
       break;
     }
     out[idx] = r;
@@ -203,8 +209,8 @@ inline critical_status resolve_node(const System& sys, const traced_line<System>
     typename System::vec z = orig.z;
     T u14[2] = {1, 1};
     int its = 0;
-    const Eigen::PartialPivLU<typename System::mat> lu(line.jacobians[i]);
-    if (chord_solve(sys, lu, typename System::mat(System::mat::Zero()), z, orig.Ft, line.plans[i], tol, its, u14) &&
+    const typename System::mat Jinv = line.jacobians[i].partialPivLu().inverse();
+    if (chord_solve(sys, Jinv, typename System::mat(System::mat::Zero()), z, orig.Ft, line.plans[i], tol, its, u14) &&
         sys.plan_valid(line.plans[i], z, orig.Ft, u14) && sys.step_norm(z - orig.z, orig.z) <= max_move) {
       node.z = z;
       plan = line.plans[i];

@@ -214,6 +214,13 @@ struct seta_system {
     forces(mu, Ft, edge);
     seta_turning_points<Policy, E1, E2>(d, p, z[0], z[1], z[2], z[3], Ft, edge, beam, spatula);
   }
+  // plan_valid, and where it holds turning_points, from one geometry.
+  bool plan_valid_turning_points(const plan_type& p, const vec& z, T mu, const T u14[2], int& beam,
+                                 int& spatula) const {
+    T Ft, edge;
+    forces(mu, Ft, edge);
+    return seta_plan_valid_turning_points<Policy, E1, E2>(d, p, z[0], z[1], z[2], z[3], Ft, edge, u14, beam, spatula);
+  }
 };
 
 }  // namespace detail
