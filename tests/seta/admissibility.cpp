@@ -257,7 +257,8 @@ TEST_CASE("libration pieces in chi: length and height against the closed forms i
   //   sin(phi), z = -sqrt(EI/N) (-2 k cos(chi) cos(phi) + (2 E(chi|k^2) - F(chi|k^2)) sin(phi))
   // (DLMF 19.2.4, 19.2.5): the quadrature of gecko/seta/admissibility.hpp against Legendre's
   // integrals (tested against mpmath in tests/elliptic) over random windows and pieces, from deep
-  // librations to next to the separatrix (up = 0.9999, k' = 0.007).
+  // librations to next to the separatrix (up = 0.9999, k' = 0.007), on pieces within a half-period
+  // and on paths through turning angles.
   using namespace gecko::detail;
   std::uint64_t seed = 0xc41f0013ULL;
   const double pi_2 = 1.5707963267948966;
@@ -273,6 +274,9 @@ TEST_CASE("libration pieces in chi: length and height against the closed forms i
     const double m = (1 + up) / 2, k = std::sqrt(m);
     double xa = -pi_2 + pi_2 * 2 * seta_test::uniform01(seed), xb = -pi_2 + pi_2 * 2 * seta_test::uniform01(seed);
     if (i % 5 == 0) xa = -pi_2, xb = pi_2;  // a whole half-period, turning angle to turning angle
+    // through one to three turning angles: chi runs on past +-pi/2 (height_walk joins the pieces),
+    // where F and E continue quasi-periodically
+    if (i % 7 == 3) xb = xa + (i % 2 ? 1 : -1) * pi_2 * (1.2 + 4 * seta_test::uniform01(seed));
     const double tol = 1e-13;
     double ds = 0, dz = 0;
     int budget = 1000;

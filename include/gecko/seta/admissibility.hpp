@@ -28,9 +28,10 @@
 //     integrating dz = -(1 + T/EA) cos(theta) dtheta / theta' over the monotone pieces of theta
 //     (split at the turning points theta* where theta' = 0, eq (8)'s first integral
 //     1/2 EI theta'^2 = M - N sin(psi) - N^2 sin^2(psi)/(2 EA), psi = theta - phi, gives theta' as
-//     a function of theta). On a libration each piece is integrated in the pendulum's variable chi
+//     a function of theta). On a libration the path is integrated in the pendulum's variable chi
 //     (sin(omega/2) = k sin(chi), omega the angle from the middle of the libration window), in
-//     which ds/dchi is smooth through the turning points (height_gl_chi below), by adaptive
+//     which ds/dchi is smooth through the turning points (height_gl_chi below) and chi runs on
+//     through them, so the pieces between two candidates are one interval of chi, by adaptive
 //     Gauss-Legendre: the 8-point rule where the 6-point one agrees with it, else the 16-point rule
 //     where the 12-point one does, to 1e-13 of the seta's length, else bisection. On a rotation
 //     each piece is mapped to t in [0, 1] by theta = theta_p + (theta_q - theta_p)(1 - cos(pi t))/2
@@ -303,18 +304,29 @@ inline T libration_chi(const height_segment<T>& g, T theta, T theta_mid) {
   return atan2(sin((from_bottom - to_top) / 4), sqrt(p));
 }
 
-// ds and dz over chi in [x0, x1] of a libration by n-point Gauss-Legendre.
+// ds and dz over chi in [x0, x1] of a libration by n-point Gauss-Legendre. chi may leave
+// [-pi/2, pi/2]: a path through a turning angle continues in chi (height_walk), and the integrand,
+// a function of sin(chi) and cos^2(chi), is reduced to [-pi/2, pi/2] by chi = r + j pi,
+// sin(chi) = (-1)^j sin(r).
 template <int n, class T>
 inline void height_gl_chi(const height_segment<T>& g, const libration_frame<T>& f, T x0, T x1, T& ds, T& dz) {
-  using std::fabs; using std::sqrt;
+  using std::fabs; using std::nearbyint; using std::sqrt;
   const auto& q = gauss_legendre<T, n>::get();
   const T h = x1 - x0, cN = g.c * g.N;
+  const T pi = seta_pi<T>();
+  const bool reduce = fabs(x0) > pi / 2 || fabs(x1) > pi / 2;
   T sum_ds = 0, sum_dz = 0;
   for (int i = 0; i < n; ++i) {
-    const T chi = x0 + h * q.x[i];  // |chi| <= pi/2
+    T chi = x0 + h * q.x[i];
+    T flip = 1;
+    if (reduce && fabs(chi) > pi / 2) {
+      const T j = nearbyint(chi / pi);
+      chi -= j * pi;
+      if (std::fmod(j, T(2)) != 0) flip = -1;
+    }
     T sc, cc;
     first_quadrant_sincos(fabs(chi), sc, cc);
-    sc = std::copysign(sc, chi);
+    sc = std::copysign(sc, chi) * flip;
     const T sw = f.k * sc;                      // sin(omega/2)
     const T d2 = cc * cc + f.kc2 * (sc * sc);   // Delta^2 = cos^2(omega/2)
     const T u = 2 * sw * sw - 1;                // sin(psi) = -cos(omega)
@@ -409,22 +421,45 @@ inline bool height_walk(const height_segment<T>& g, T theta_s, T rate_s, T theta
   };
   const bool libration = g.up < 1;
   const libration_frame<T> lf = libration ? make_libration_frame(g) : libration_frame<T>{};
+  // On a libration the path is integrated in chi, which runs on through a turning angle (chi =
+  // +-pi/2; theta turns back, chi does not: sin(chi) retraces itself), so the pieces on either
+  // side of a turning point are one interval of chi: [cx0, cx1], open until a split point (a
+  // candidate for the minimum of z) or the segment's end. A turning point is no such candidate
+  // (theta does not cross +-pi/2 there).
+  bool open = false;
+  T cx0 = 0, cx1 = 0;
+  auto flush = [&]() {
+    if (!open) return;
+    T ds = 0, dz = 0;
+    int budget = 1000;
+    if (!height_adaptive_chi(g, lf, cx0, cx1, tol, 0, budget, ds, dz)) ok = false;
+    s += ds;
+    z += dz;
+    visit(s, z);
+    open = false;
+  };
   auto piece = [&](T a, T b, bool turn_a, bool turn_b, bool upper_a, bool upper_b) {
     auto sub = [&](T from, T to) {
       if (from == to) return;
       const bool ta = turn_a && from == a, tb = turn_b && to == b;
-      T ds = 0, dz = 0;
-      int budget = 1000;
-      bool done;
       if (libration) {
         const T mid = from + (to - from) / 2;
         const T xa = ta ? (upper_a ? pi / 2 : -pi / 2) : libration_chi(g, from, mid);
         const T xb = tb ? (upper_b ? pi / 2 : -pi / 2) : libration_chi(g, to, mid);
-        done = height_adaptive_chi(g, lf, xa, xb, tol, 0, budget, ds, dz);
-      } else {
-        done = height_adaptive(g, from, to, T(0), tol, 0, budget, ds, dz);
+        if (open) {
+          // Continues from the turning point that ended the open interval (xa = +-pi/2 there):
+          // chi goes on in the interval's direction by this piece's extent.
+          cx1 += (cx1 >= cx0 ? T(1) : T(-1)) * fabs(xb - xa);
+        } else {
+          cx0 = xa;
+          cx1 = xb;
+          open = true;
+        }
+        return;
       }
-      if (!done) ok = false;
+      T ds = 0, dz = 0;
+      int budget = 1000;
+      if (!height_adaptive(g, from, to, T(0), tol, 0, budget, ds, dz)) ok = false;
       s += ds;
       z += dz;
       visit(s, z);
@@ -433,6 +468,7 @@ inline bool height_walk(const height_segment<T>& g, T theta_s, T rate_s, T theta
     T cur = a;
     for (T c = next_split(a, up); up ? c < b : c > b; c = next_split(c, up)) {
       sub(cur, c);
+      flush();
       cur = c;
     }
     sub(cur, b);
@@ -448,6 +484,7 @@ inline bool height_walk(const height_segment<T>& g, T theta_s, T rate_s, T theta
   }
   if ((theta_e - th) * dir < -1e-9) return false;  // the last piece runs against theta'
   piece(th, theta_e, turning > 0, false, upper, false);
+  flush();
   return ok;
 }
 
