@@ -60,6 +60,12 @@ inline bool chord_solve(const System& sys, const typename System::mat& Jinv,
   return false;
 }
 
+// An LU object in place of Jinv would convert to a matrix silently (Eigen evaluates it) and
+// iterate with the wrong matrix: refused at compile time.
+template <class System, class T>
+bool chord_solve(const System&, const Eigen::PartialPivLU<typename System::mat>&, const typename System::mat&,
+                 typename System::vec&, T, const typename System::plan_type&, T, int&, T*) = delete;
+
 // Evaluate a traced line at Ft values (first crossing along the line).
 template <class System, class T>
 inline void evaluate_line(const System& sys, const traced_line<System>& line, const T* Ft, std::size_t count,
