@@ -426,16 +426,20 @@ inline bool height_walk(const height_segment<T>& g, T theta_s, T rate_s, T theta
   // side of a turning point are one interval of chi: [cx0, cx1], open until a split point (a
   // candidate for the minimum of z) or the segment's end. A turning point is no such candidate
   // (theta does not cross +-pi/2 there).
+  auto advance = [&](bool done, T ds, T dz) {  // one integrated interval: s, z at its end
+    if (!done) ok = false;
+    s += ds;
+    z += dz;
+    visit(s, z);
+  };
   bool open = false;
   T cx0 = 0, cx1 = 0;
   auto flush = [&]() {
     if (!open) return;
     T ds = 0, dz = 0;
     int budget = 1000;
-    if (!height_adaptive_chi(g, lf, cx0, cx1, tol, 0, budget, ds, dz)) ok = false;
-    s += ds;
-    z += dz;
-    visit(s, z);
+    const bool done = height_adaptive_chi(g, lf, cx0, cx1, tol, 0, budget, ds, dz);
+    advance(done, ds, dz);
     open = false;
   };
   auto piece = [&](T a, T b, bool turn_a, bool turn_b, bool upper_a, bool upper_b) {
@@ -459,10 +463,8 @@ inline bool height_walk(const height_segment<T>& g, T theta_s, T rate_s, T theta
       }
       T ds = 0, dz = 0;
       int budget = 1000;
-      if (!height_adaptive(g, from, to, T(0), tol, 0, budget, ds, dz)) ok = false;
-      s += ds;
-      z += dz;
-      visit(s, z);
+      const bool done = height_adaptive(g, from, to, T(0), tol, 0, budget, ds, dz);
+      advance(done, ds, dz);
     };
     const bool up = a < b;
     T cur = a;
@@ -633,6 +635,17 @@ inline pose_frame<T> make_pose_frame(const seta_params<T>& d, const seta_pose<T>
   return f;
 }
 
+// A segment's first-integral constant (eq (8)), M = EI rate^2/2 + N u + c N^2 u^2/2 at a point with
+// u = sin(theta - phi), and in *scale the sum of its terms' magnitudes (N included), the scale of
+// its rounding.
+template <class T>
+inline T first_integral_constant(T EI, T c, T N, T rate, T u, T& scale) {
+  using std::fabs;
+  const T bend = EI * rate * rate / 2, axial = c * N * N * u * u / 2;
+  scale = bend + N * fabs(u) + axial + N;
+  return bend + N * u + axial;
+}
+
 // The general path of admissibility_imp (turning points, or theta leaving [-pi/2, pi/2]): kept
 // apart so that admissibility_imp, the common case (theta monotone and within [-pi/2, pi/2]),
 // stays a small function. f: the pose's frame (forces and beta not NaN).
@@ -662,14 +675,9 @@ inline admissibility_result<T> admissibility_general(const seta_params<T>& d, co
   // First integrals (eq (8)): M2 from the joint state, M1 from the beam's end at the joint
   // (EI1 theta1'(l1) = EI2 theta2'(l1), eq (4)), each with the sum of its terms' magnitudes (N
   // included), the scale of its rounding.
-  auto first_integral = [&](T EI, T c, T rate, T u, T& scale) {
-    const T bend = EI * rate * rate / 2, axial = c * N * N * u * u / 2;
-    scale = bend + N * fabs(u) + axial + N;
-    return bend + N * u + axial;
-  };
   T scale1, scale2;
-  const T M2 = first_integral(d.EI2, d.c2, p, ub, scale2);
-  const T M1 = first_integral(d.EI1, d.c1, d.EI2 / d.EI1 * p, v, scale1);
+  const T M2 = first_integral_constant(d.EI2, d.c2, N, p, ub, scale2);
+  const T M1 = first_integral_constant(d.EI1, d.c1, N, d.EI2 / d.EI1 * p, v, scale1);
   // The turning angles (an asin each) only where theta turns; the walks below set the others.
   auto g1 = make_height_segment(d.EI1, d.c1, M1, N, phi, sphi, cphi, n1 > 0);
   auto g2 = make_height_segment(d.EI2, d.c2, M2, N, phi, sphi, cphi, n2 > 0);
@@ -826,14 +834,13 @@ inline bool beam_first_integral_bars_level(const seta_params<T>& d, const seta_p
 template <class T>
 inline bool spatula_first_integral_bars_level(const seta_params<T>& d, const seta_pose<T>& st, const pose_frame<T>& f,
                                               T N, T sb, T cb, T& lo, T& hi) {
-  using std::fabs; using std::sqrt;
+  using std::sqrt;
   const T Ft = f.Ft, Fn = f.Fn, p = st.theta_rate_joint;
   if (f.n2 != 1 || !(p < 0) || !(N > 0) || !(f.beta <= seta_pi<T>() / 2)) return false;
   const T t_beta = Ft * sb - Fn * cb, slope_beta = Ft * cb + Fn * sb;  // T, T' at beta
-  const T ub = t_beta / N;                                            // sin(beta - phi)
-  const T bend = d.EI2 * p * p / 2, axial = d.c2 * N * N * ub * ub / 2;
-  const T M2 = bend + N * ub + axial;
-  const T margin = T(1e-9) * (bend + N * fabs(ub) + axial + N);
+  T scale;
+  const T M2 = first_integral_constant(d.EI2, d.c2, N, p, t_beta / N, scale);  // u = sin(beta - phi)
+  const T margin = T(1e-9) * scale;
   const T root = 1 + 2 * d.c2 * M2;
   if (!(root > 0)) return false;
   const T t_plus = 2 * M2 / (1 + sqrt(root));
@@ -873,6 +880,10 @@ inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const 
     if (lo1 >= -half_pi && hi1 <= half_pi && lo2 >= -half_pi && hi2 <= half_pi) {
       // T's range from T and T' at the ends (the ranges are shorter than pi): axial_force_range.
       T t_min = 0, t_max = 0;  // over the extensible segments, scaled by their 1/EA
+      auto add_range = [&](T c, T lo, T hi) {
+        if (c * lo < t_min) t_min = c * lo;
+        if (c * hi > t_max) t_max = c * hi;
+      };
       auto seg_range = [&](T c, T th_a, T sa, T ca, T th_b, T sb, T cb) {
         if (!(c > 0)) return;
         if (th_b < th_a) {
@@ -881,8 +892,7 @@ inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const 
         }
         T lo, hi;
         axial_force_range(Ft * sa - Fn * ca, Ft * ca + Fn * sa, Ft * sb - Fn * cb, Ft * cb + Fn * sb, N, lo, hi);
-        if (c * lo < t_min) t_min = c * lo;
-        if (c * hi > t_max) t_max = c * hi;
+        add_range(c, lo, hi);
       };
       T sb = 0, cb = 0;
       if (d.c1 > 0 || d.c2 > 0 || f.n2 > 0) {
@@ -896,14 +906,8 @@ inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const 
         const T sj = sb * d.co2 - cb * d.s2, cj = cb * d.co2 + sb * d.s2;
         seg_range(d.c1, d.alpha1, d.s1, d.co1, th_j1, sj, cj);
       }
-      if (d.c2 > 0) {
-        if (f.n2 == 0) {
-          seg_range(d.c2, beta, sb, cb, half_pi, T(1), T(0));
-        } else {
-          if (d.c2 * lo_s < t_min) t_min = d.c2 * lo_s;
-          if (d.c2 * hi_s > t_max) t_max = d.c2 * hi_s;
-        }
-      }
+      if (f.n2 == 0) seg_range(d.c2, beta, sb, cb, half_pi, T(1), T(0));
+      else if (d.c2 > 0) add_range(d.c2, lo_s, hi_s);
       // z decreases along s only while the stretch 1 + T/EA is positive (tension, T > 0, never
       // stops it; a compression of EA or more would).
       if (t_min > -1) {

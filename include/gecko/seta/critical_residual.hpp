@@ -193,13 +193,25 @@ inline seta_plan plan_seta(const seta_params<T>& d, T Fn, T beta, T p, T q, T Ft
                                solved ? d.l2 : nan)};
 }
 
+// The plan check and the turning-point count on a state's geometry (the public forms below build
+// it; a state read off the line needs both and builds it once).
+template <bool E1, bool E2, class S>
+inline bool geometry_plan_valid(const seta_geometry<E1, E2, S>& g, const seta_plan& plan, const S u14[2]) {
+  return segment_plan_valid(g.beam, plan.beam, g.psi_s1, g.X3_s1, g.psi_e1, g.X3_e1, u14[0], g.h1) &&
+         segment_plan_valid(g.spatula, plan.spatula, g.psi_s2, g.X3_s2, g.psi_e2, g.X3_e2, u14[1], g.h2);
+}
+template <class Policy, bool E1, bool E2, class S>
+inline void geometry_turning_points(const seta_geometry<E1, E2, S>& g, const seta_plan& plan, int& beam,
+                                    int& spatula) {
+  beam = segment_turning_points<Policy>(g.beam, plan.beam, g.psi_s1, g.X3_s1, g.psi_e1, g.X3_e1, g.h1);
+  spatula = segment_turning_points<Policy>(g.spatula, plan.spatula, g.psi_s2, g.X3_s2, g.psi_e2, g.X3_e2, g.h2);
+}
+
 template <bool E1, bool E2, class T>
 inline bool seta_plan_valid(const seta_params<T>& d, const seta_plan& plan, T Fn, T beta, T p, T q, T Ft,
                             T edge, const T u14[2]) {
   const bool angles = !plan.beam.direct || !plan.spatula.direct;
-  const auto g = make_seta_geometry<E1, E2>(d, Fn, beta, p, q, Ft, edge, angles);
-  return segment_plan_valid(g.beam, plan.beam, g.psi_s1, g.X3_s1, g.psi_e1, g.X3_e1, u14[0], g.h1) &&
-         segment_plan_valid(g.spatula, plan.spatula, g.psi_s2, g.X3_s2, g.psi_e2, g.X3_e2, u14[1], g.h2);
+  return geometry_plan_valid(make_seta_geometry<E1, E2>(d, Fn, beta, p, q, Ft, edge, angles), plan, u14);
 }
 
 // seta_plan_valid and, where the plan is valid, seta_turning_points on one geometry (a state read
@@ -207,13 +219,12 @@ inline bool seta_plan_valid(const seta_params<T>& d, const seta_plan& plan, T Fn
 template <class Policy, bool E1, bool E2, class T>
 inline bool seta_plan_valid_turning_points(const seta_params<T>& d, const seta_plan& plan, T Fn, T beta, T p, T q,
                                            T Ft, T edge, const T u14[2], int& beam, int& spatula) {
+  // The angles whenever either needs them: the plan check for a phase plan, the count for one
+  // with added periods (a subset).
   const bool angles = !plan.beam.direct || !plan.spatula.direct;
   const auto g = make_seta_geometry<E1, E2>(d, Fn, beta, p, q, Ft, edge, angles);
-  if (!segment_plan_valid(g.beam, plan.beam, g.psi_s1, g.X3_s1, g.psi_e1, g.X3_e1, u14[0], g.h1) ||
-      !segment_plan_valid(g.spatula, plan.spatula, g.psi_s2, g.X3_s2, g.psi_e2, g.X3_e2, u14[1], g.h2))
-    return false;
-  beam = segment_turning_points<Policy>(g.beam, plan.beam, g.psi_s1, g.X3_s1, g.psi_e1, g.X3_e1, g.h1);
-  spatula = segment_turning_points<Policy>(g.spatula, plan.spatula, g.psi_s2, g.X3_s2, g.psi_e2, g.X3_e2, g.h2);
+  if (!geometry_plan_valid(g, plan, u14)) return false;
+  geometry_turning_points<Policy>(g, plan, beam, spatula);
   return true;
 }
 
@@ -221,9 +232,8 @@ template <class Policy, bool E1, bool E2, class T>
 inline void seta_turning_points(const seta_params<T>& d, const seta_plan& plan, T Fn, T beta, T p, T q, T Ft,
                                 T edge, int& beam, int& spatula) {
   const bool angles = plan.beam.periods != 0 || plan.spatula.periods != 0;  // see segment_turning_points
-  const auto g = make_seta_geometry<E1, E2>(d, Fn, beta, p, q, Ft, edge, angles);
-  beam = segment_turning_points<Policy>(g.beam, plan.beam, g.psi_s1, g.X3_s1, g.psi_e1, g.X3_e1, g.h1);
-  spatula = segment_turning_points<Policy>(g.spatula, plan.spatula, g.psi_s2, g.X3_s2, g.psi_e2, g.X3_e2, g.h2);
+  geometry_turning_points<Policy>(make_seta_geometry<E1, E2>(d, Fn, beta, p, q, Ft, edge, angles), plan, beam,
+                                  spatula);
 }
 
 }  // namespace detail
