@@ -146,27 +146,27 @@ def verify_states(P, FT, Fn, beta, status, chunk=4000):
     out["steps"] = np.zeros((n, m), dtype=np.int64)
     out["turns_beam"] = np.full((n, m), -1, dtype=np.int64)
     out["turns_spatula"] = np.full((n, m), -1, dtype=np.int64)
+    out["root_turns_beam"] = np.full((n, m), -1, dtype=np.int64)
+    out["root_turns_spatula"] = np.full((n, m), -1, dtype=np.int64)
     out["root_found"] = np.zeros((n, m), dtype=bool)
     for c0 in range(0, rows.size, chunk):
         r, c = rows[c0:c0 + chunk], cols[c0:c0 + chunk]
         d = design_dict(P[r])
         v = verify.verify(d, FT[r, c], Fn[r, c], beta[r, c])
         for k in out:
-            if k == "turns_beam":
-                out[k][r, c] = v["turns_beam"]
-            elif k == "turns_spatula":
-                out[k][r, c] = v["turns_spatula"]
-            elif k == "steps":
-                out[k][r, c] = v["steps"]
-            else:
-                out[k][r, c] = v[k]
+            out[k][r, c] = v[k]
     return out
 
 
-def classify(P, FT, Fn, beta, status, v):
+def classify(P, FT, Fn, beta, status, v, turns=None):
     """Silently wrong: status 0 and the verifier, where it is conclusive (its own uncertainty below a
     tenth of the threshold), disagrees by more than WRONG_REL; NaN or a number where the status
-    says otherwise."""
+    says otherwise.
+
+    turns: optional (tpb, tps), gecko's turning-point counts of each state. Given, the verifier is
+    conclusive only where the shot at the returned Fn and the shot at its own root both count these
+    turning points: a root on another branch of the shot (other turns) is not a verdict on the state.
+    The states excluded by this rule alone are returned as ``other_branch``."""
     scale = np.maximum(1.0, np.abs(Fn))
     # 7 (inadmissible: the seta crosses the substrate) is a solved state with its values kept, so
     # it is verified like 0
@@ -177,13 +177,20 @@ def classify(P, FT, Fn, beta, status, v):
     # NaN dFn: the verifier's damped Newton found no root near the returned Fn -> inconclusive
     # (reported separately; every such case so far is a huge-force, rounding-amplifying state)
     conclusive_fn &= np.isfinite(rel)
+    other_branch = np.zeros(np.shape(status), dtype=bool)
+    if turns is not None:
+        tpb, tps = turns
+        same = ((v["turns_beam"] == tpb) & (v["turns_spatula"] == tps) &
+                (v["root_turns_beam"] == tpb) & (v["root_turns_spatula"] == tps))
+        other_branch = ok & conclusive_fn & ~same
+        conclusive_fn &= same
     wrong_fn = ok & conclusive_fn & ~(rel <= WRONG_REL)
     wrong_beta = ok & conclusive_fn & conclusive_beta & ~(np.abs(v["dbeta"]) <= WRONG_REL)
     nonfinite_ok = ok & ~(np.isfinite(Fn) & np.isfinite(beta))
     number_with_status = ~ok & (np.isfinite(Fn) | np.isfinite(beta))
     return dict(rel=rel, wrong_fn=wrong_fn, wrong_beta=wrong_beta, nonfinite_ok=nonfinite_ok,
                 number_with_status=number_with_status, inconclusive_fn=ok & ~conclusive_fn,
-                inconclusive_beta=ok & ~conclusive_beta)
+                inconclusive_beta=ok & ~conclusive_beta, other_branch=other_branch)
 
 
 def run_chunk(P, FT, timeout):

@@ -20,7 +20,9 @@ has its campaign's Fn and beta bit for bit.
 Where both files have the admissibility check's lowest heights (``min_z``), ``heights`` compares
 them on the states both solved (a change of the check itself shows there, not in Fn or beta).
 
-"Silently wrong" uses the campaign's threshold and conclusiveness rule (campaign.classify).
+"Silently wrong" uses the campaign's threshold and conclusiveness rule (campaign.classify), with
+the new solver's turning-point counts: a verifier root with other turning points than the state
+(another branch of the shot) is inconclusive, counted in ``other_branch``.
 """
 from __future__ import annotations
 
@@ -79,7 +81,8 @@ def run(old_path: str, new_path: str) -> dict:
     t0 = time.time()
     status = np.where(check, new["status"], -1)   # verify only the changed states
     v = campaign.verify_states(new["P"], new["FT"], new["Fn"], new["beta"], status)
-    cl = campaign.classify(new["P"], new["FT"], new["Fn"], new["beta"], status, v)
+    cl = campaign.classify(new["P"], new["FT"], new["Fn"], new["beta"], status, v,
+                           turns=(new["tpb"], new["tps"]))
     conclusive = check & ~cl["inconclusive_fn"]
     wrong = cl["wrong_fn"] | cl["wrong_beta"]
     rows, cols = np.nonzero(wrong)
@@ -87,6 +90,14 @@ def run(old_path: str, new_path: str) -> dict:
                 newly_solved=int(masks["newly_solved"].sum()), moved=int(masks["moved"].sum()) if "Fn" in old else None,
                 verified_conclusive=int(conclusive.sum()),
                 inconclusive=int((check & cl["inconclusive_fn"]).sum()),
+                other_branch=int((check & cl["other_branch"]).sum()),
+                other_branch_states=[dict(design=int(r), column=int(c), Ft=float(new["FT"][r, c]),
+                                          Fn=float(new["Fn"][r, c]), rel_dFn=float(cl["rel"][r, c]),
+                                          turns_state=[int(new["tpb"][r, c]), int(new["tps"][r, c])],
+                                          turns_at_Fn=[int(v["turns_beam"][r, c]), int(v["turns_spatula"][r, c])],
+                                          turns_at_root=[int(v["root_turns_beam"][r, c]),
+                                                         int(v["root_turns_spatula"][r, c])])
+                                     for r, c in zip(*np.nonzero(check & cl["other_branch"]))][:20],
                 silently_wrong=int(wrong.sum()),
                 wrong_states=[dict(design=int(r), column=int(c), Ft=float(new["FT"][r, c]),
                                    Fn=float(new["Fn"][r, c]), rel_dFn=float(cl["rel"][r, c]))

@@ -202,7 +202,9 @@ def verify(d, Ft, Fn, beta, newton_iterations=5):
 
     Returns a dict of arrays: R (theta1(0) - alpha1), dFn (verifier root - returned Fn), dbeta,
     theta_err (integration error estimate), fn_uncert (verifier's own Fn uncertainty), steps,
-    turns_beam, turns_spatula, refined (bool), root_found (bool)."""
+    turns_beam, turns_spatula (turning points counted at the returned Fn), root_turns_beam,
+    root_turns_spatula (counted at the verifier's own root; -1 where it found none), refined (bool),
+    root_found (bool)."""
     Ft = np.asarray(Ft, float)
     Fn = np.asarray(Fn, float)
     beta = np.asarray(beta, float)
@@ -260,8 +262,23 @@ def verify(d, Ft, Fn, beta, newton_iterations=5):
         root_found[idx] = conv
         refined[idx] = True
         dFn[idx] = fn_root[idx] - Fn[idx]
+    # The turning points of the verifier's own root: a Newton root far from the returned Fn may lie
+    # on another branch of the shot (another number of turns), and then it is no verdict on the
+    # returned state. Where no refinement ran, the root is within 1e-9 relative of Fn and its
+    # counts are those at Fn.
+    root_tb, root_ts = tb.copy(), ts.copy()
+    if refined.any():
+        idx = np.nonzero(refined)[0]
+        root_tb[idx] = -1
+        root_ts[idx] = -1
+        hit = idx[root_found[idx]]
+        if hit.size:
+            sub = {k: v[hit] for k, v in d.items()}
+            _, _, _, _, rtb, rts = shoot(sub, Ft[hit], fn_root[hit], count_turns=True)
+            root_tb[hit], root_ts[hit] = rtb, rts
     return dict(R=R, S=S, dFn=dFn, fn_root=fn_root, dbeta=beta - beta_root, theta_err=er,
-                fn_uncert=fn_uncert, beta_uncert=beta_uncert, steps=nu, turns_beam=tb, turns_spatula=ts, refined=refined,
+                fn_uncert=fn_uncert, beta_uncert=beta_uncert, steps=nu, turns_beam=tb, turns_spatula=ts,
+                root_turns_beam=root_tb, root_turns_spatula=root_ts, refined=refined,
                 root_found=root_found)
 
 

@@ -717,7 +717,9 @@ class TwoLevelSeta:
         dict
             ``dFn`` and ``dtheta_joint`` of shape (len(Ft), 9), columns in the order of ``parameters``
             (EI1, EI2, EA1, EA2, l1, l2, alpha1, alpha2, w); ``Fn`` and ``status``; NaN rows where
-            ``status != 0``.
+            ``status != 0``, and at states recovered on a segment's separatrix whose distance from
+            it is below the state's digits (a segment tens of elastic lengths long: the length
+            equations cannot be differentiated there).
 
         Examples
         --------

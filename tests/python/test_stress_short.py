@@ -44,7 +44,7 @@ def test_short_campaign_no_silently_wrong_point():
     FT = campaign.sample_ft(P, rng)
     Fn, beta, status, tpb, tps, secs = campaign.run_gecko(P, FT, timeout=5.0, progress=False)
     v = campaign.verify_states(P, FT, Fn, beta, status)
-    cl = campaign.classify(P, FT, Fn, beta, status, v)
+    cl = campaign.classify(P, FT, Fn, beta, status, v, turns=(tpb, tps))
     ok = (status == 0) | (status == 7)  # 7: solved, inadmissible, values kept and verified
     assert ok.mean() > 0.5
     assert not cl["number_with_status"].any()

@@ -205,3 +205,24 @@ def test_changed_compares_lowest_heights_of_states_both_solved():
     assert r["changed"] == 2 and r["verdicts_flipped"] == 1
     assert abs(r["max_rel_change"] - (2.2e-12 - 2.2e-13) / 1.1) < 1e-20
     assert changed.height_changes({"status": status}, new) is None
+
+
+def test_classify_takes_no_verdict_from_a_root_on_another_branch():
+    """A verifier root 1e-6 away from the returned Fn, with its own uncertainty far below the
+    threshold, flags the state wrong; the same root with other turning points than the state (at the
+    returned Fn or at the root itself) is another branch of the shot: no verdict, counted apart."""
+    from validation import campaign
+    P = np.ones((1, len(campaign.FIELDS)))
+    FT, Fn, beta = np.full((1, 3), 10.0), np.full((1, 3), -5.0), np.full((1, 3), 1.0)
+    status = np.zeros((1, 3), dtype=np.int64)
+    tpb, tps = np.ones((1, 3), dtype=np.int64), np.ones((1, 3), dtype=np.int64)
+    v = dict(dFn=np.full((1, 3), 5e-6), dbeta=np.zeros((1, 3)), fn_uncert=np.full((1, 3), 1e-14),
+             beta_uncert=np.full((1, 3), 1e-14),
+             turns_beam=np.array([[1, 0, 1]]), turns_spatula=np.ones((1, 3), dtype=np.int64),
+             root_turns_beam=np.array([[1, 1, 3]]), root_turns_spatula=np.ones((1, 3), dtype=np.int64))
+    without = campaign.classify(P, FT, Fn, beta, status, v)
+    assert without["wrong_fn"].all() and not without["other_branch"].any()
+    cl = campaign.classify(P, FT, Fn, beta, status, v, turns=(tpb, tps))
+    assert cl["wrong_fn"].tolist() == [[True, False, False]]
+    assert cl["other_branch"].tolist() == [[False, True, True]]
+    assert cl["inconclusive_fn"].tolist() == [[False, True, True]]

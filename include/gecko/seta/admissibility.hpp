@@ -570,6 +570,69 @@ inline bool calibrate_near_saddle(const height_segment<T>& g0, T theta_s, T rate
   return false;
 }
 
+// A libration so close to its separatrix that neither the state's M nor eta resolves it (a
+// segment tens of elastic lengths long, gecko/seta/detail/separatrix_limit.hpp): at each turning
+// point it dwells next to the saddle, straight and aligned with the force, for a time that grows
+// like log(1/eta) and is the same at every turning point of the path (the orbit is symmetric about
+// each). The segment is then the libration at eta_p (resolved: its shape differs from the exact
+// one by O(eta_p^2) relative) walked turning point to turning point, with the length it misses,
+// length - L(eta_p), shared equally among the turning points as straight pieces along the force
+// direction (dz/ds = -(1 + c N) cos(phi + pi/2) there). Valid where L(eta_p) < length: the exact
+// eta is then smaller still. False otherwise, or where a piece's walk fails.
+template <class T>
+inline bool walk_past_saddle(const height_segment<T>& g0, T theta_s, T rate_s, T theta_e, int turning, T length,
+                             T tol, segment_walk<T>& w) {
+  using std::floor; using std::sqrt;
+  if (turning < 1 || !(g0.N > 0)) return false;
+  const T pi = seta_pi<T>();
+  const T delta_p = std::ldexp(std::fabs(g0.M) + g0.N, -36);
+  const T eta_p = sqrt(2 * delta_p / (g0.N * (1 + g0.c * g0.N)));
+  const height_segment<T> g = height_segment_near_saddle(g0.EI, g0.c, g0.N, g0.phi, eta_p);
+  const T k = floor((theta_s - g.phi + pi / 2) / (2 * pi) + T(0.5));
+  const T th_max = g.phi + g.psi_top + k * 2 * pi, th_min = g.phi - pi - g.psi_top + k * 2 * pi;
+  // The pieces between turning points, each walked on its own (none has a turning point inside).
+  T ends[8];
+  if (turning > 6) return false;
+  T dir = rate_s > 0 ? T(1) : (rate_s < 0 ? T(-1) : (std::fabs(theta_s - th_max) <= std::fabs(theta_s - th_min) ? T(-1) : T(1)));
+  for (int i = 0; i < turning; ++i) {
+    ends[i] = dir > 0 ? th_max : th_min;
+    dir = -dir;
+  }
+  segment_walk<T> pieces[7];
+  T walked = 0;
+  for (int i = 0; i <= turning; ++i) {
+    const T a = i == 0 ? theta_s : ends[i - 1], b = i == turning ? theta_e : ends[i];
+    pieces[i] = walk_segment(g, a, i == 0 ? rate_s : T(0), b, 0, tol);
+    if (!pieces[i].ok) return false;
+    walked += pieces[i].length;
+  }
+  if (!(walked < length)) return false;
+  const T dwell = (length - walked) / turning;
+  const T slope = (1 + g.c * g.N) * g.sin_phi;
+  T s = 0, z = 0;
+  w = segment_walk<T>();
+  auto lowest = [&](T zz, T ss) {
+    if (zz < w.zmin) {
+      w.zmin = zz;
+      w.smin = ss;
+    }
+  };
+  for (int i = 0; i <= turning; ++i) {
+    lowest(z + pieces[i].zmin, s + pieces[i].smin);
+    z += pieces[i].dz;
+    s += pieces[i].length;
+    if (i < turning) {  // the straight dwell: linear in s, lowest at an end
+      z += slope * dwell;
+      s += dwell;
+      lowest(z, s);
+    }
+  }
+  w.ok = true;
+  w.length = s;
+  w.dz = z;
+  return true;
+}
+
 // theta's range [lo, hi] on one segment, with u = sin(theta - phi) at both ends (the ends of the
 // range are segment ends or turning angles, where u is known without trigonometry).
 template <class T>
@@ -734,6 +797,7 @@ inline admissibility_result<T> admissibility_general(const seta_params<T>& d, co
     if (w.ok && fabs(w.length - length) <= len_tol) return w;
     segment_walk<T> c;
     if (calibrate_near_saddle(g, th_s, rate_s, th_e, n, length, tol, len_tol, m_tol, c)) return c;
+    if (walk_past_saddle(g, th_s, rate_s, th_e, n, length, tol, c)) return c;
     w.ok = false;
     return w;
   };

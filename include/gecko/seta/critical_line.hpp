@@ -27,6 +27,7 @@
 #include "gecko/seta/detail/line_output.hpp"
 #include "gecko/seta/detail/line_trace.hpp"
 #include "gecko/seta/detail/natural_state.hpp"
+#include "gecko/seta/detail/separatrix_limit.hpp"
 #include "gecko/seta/detail/seta_system.hpp"
 #include "gecko/seta/extensibility.hpp"
 #include "gecko/seta/solve_critical.hpp"
@@ -95,6 +96,7 @@ inline void critical_line_at_imp(const TwoLevelSeta<T>& s, const T* Ft, std::siz
       return;
     }
     evaluate_line(sys, line, Ft, which.size(), which.data(), opt.tolerance, out);
+    extend_on_separatrix(sys, line, scale, Ft, which.size(), which.data(), opt.tolerance, out);
   };
   if (!pos.empty()) run(pos, hi);
   if (!neg.empty()) run(neg, lo);

@@ -6,7 +6,8 @@
 // the Newton Jacobian at the state. Ft is held fixed (the contact-edge rate then depends on EA2
 // and w through sqrt(1 - Ft^2/(2 EA2 w))). Order of the parameters: EI1, EI2, EA1, EA2, l1, l2,
 // alpha1, alpha2, w (the fields of TwoLevelSeta). For EA = infinity the derivative is 0 (the
-// 1/EA term vanishes to first order).
+// 1/EA term vanishes to first order). States recovered on a separatrix beyond the digits of the
+// state (gecko/seta/detail/separatrix_limit.hpp) get NaN derivatives.
 #pragma once
 
 #include <array>
@@ -18,6 +19,7 @@
 
 #include "gecko/seta/critical_line.hpp"
 #include "gecko/seta/detail/dual.hpp"
+#include "gecko/seta/detail/separatrix_limit.hpp"
 #include "gecko/seta/detail/seta_system.hpp"
 #include "gecko/seta/extensibility.hpp"
 
@@ -44,6 +46,15 @@ inline void design_derivatives(const TwoLevelSeta<T>& s, const critical_state<T>
   if (st.status != critical_status::converged && st.status != critical_status::inadmissible) return;
   const auto z = sys.from_guess(st.Fn, st.theta_joint, st.theta_rate_joint, st.theta_rate_base, st.Ft);
   const T mu = sys.mu_of(st.Ft);
+  // A state recovered on a separatrix (detail/separatrix_limit.hpp) whose distance from it the
+  // state's digits do not resolve: the length equations cannot be differentiated there (their
+  // derivatives go like 1/delta, with delta formed by cancellation). Left NaN.
+  {
+    T lengths[2], gaps[2];
+    separatrix_measures(sys, z, mu, lengths, gaps);
+    for (int i = 0; i < 2; ++i)
+      if (lengths[i] >= 10 && std::fabs(gaps[i]) < std::ldexp(T(1), -40)) return;
+  }
   const auto plan = sys.plan(z, mu);
   typename System::vec F;
   typename System::mat J;

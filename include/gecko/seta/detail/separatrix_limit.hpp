@@ -1,0 +1,418 @@
+// gecko/seta/detail/separatrix_limit.hpp — critical states past a followed line's stall, where a
+// segment lies on its separatrix to double precision.
+//
+// docs/theory/two_level_seta.md, "Long segments". A tensioned segment many elastic lengths
+// l sqrt(N/EI) long is straight and aligned with the force except in boundary layers at its ends;
+// its first integral (paper 001 eq (8)) passes the saddle u = sin(theta - phi) = 1 at the distance
+//     delta = R(1) = M - N - c N^2/2,
+// which shrinks like exp(-l sqrt(N/EI)). The length equation of such a segment (eq (10) for the
+// spatula, eq (13) for the beam) is logarithmic in delta and, with delta formed from the state by
+// cancellation, cannot be solved beyond about 30 elastic lengths: the followed line stalls there
+// (validation/README.md, "Where the followed line gives up"). Its limit is not singular, though:
+// replacing that equation by delta = 0 gives a smooth system in the same unknowns (Fn, beta, p, q)
+// whose solution differs from the exact state by O(delta). For the spatula, whose M2 = Ft + w is
+// fixed, delta2 = 0 fixes N (inextensible: N = Ft + w, Fn^2 = w (2 Ft + w)); for the beam it fixes
+// M1, i.e. the joint rate p through eq (12).
+//
+// A state of the limit system is corrected to the exact one: near the saddle the segment's length
+// obeys L(delta) = L(delta_b) + slope log(delta_b / delta) to O(delta log delta), the slope a whole
+// number of passages times the saddle's time constant; the exact Carlson forms
+// (gecko/seta/elastica_segment.hpp) measure the segment, from the same ends with the same rate
+// signs, at two distances they resolve, L(delta) = l gives the exact state's delta, and the limit
+// state moves by the limit system's Jacobian times it. Accepted only where the segment is already
+// shorter than l at delta_b, exactly one side of the separatrix fits the ends, the turning points
+// are the followed line's, and the correction's uncertainty is below a quarter of the tolerance.
+// Elsewhere the state stays not reached.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "gecko/seta/critical_line_types.hpp"
+#include "gecko/seta/critical_residual.hpp"
+#include "gecko/seta/detail/dual.hpp"
+#include "gecko/seta/detail/line_trace.hpp"
+#include "gecko/seta/detail/newton.hpp"
+#include "gecko/seta/detail/seta_system.hpp"
+#include "gecko/seta/solve_critical.hpp"
+
+namespace gecko {
+namespace detail {
+
+// Which segments the limit system takes on their separatrix.
+constexpr int limit_beam = 1, limit_spatula = 2;
+
+// R(1) = M - N - c N^2/2 of a segment: its signed distance from the separatrix (> 0: rotation).
+template <bool E, class S>
+inline S separatrix_gap(const segment_constants<S, E>& g) {
+  using T = scalar_of_t<S>;
+  if constexpr (E) return g.M - g.N - g.c * g.N * g.N * T(0.5);
+  else return g.M - g.N;
+}
+
+// The critical-state equations with the length equation of each segment in `mask` replaced by
+// its separatrix condition delta = 0 (scaled to a length: l delta / (|M| + N)). A System for
+// newton_fixed_ft; the plans of the limit segments are ignored.
+template <class T, class Policy, bool E1, bool E2>
+struct separatrix_system {
+  using base_type = seta_system<T, Policy, E1, E2>;
+  static constexpr int n = 4;
+  using value_type = T;
+  using vec = typename base_type::vec;
+  using mat = typename base_type::mat;
+  using plan_type = seta_plan;
+
+  const base_type& base;
+  int mask;
+
+  template <class S>
+  void residual_of(const S& Fn, const S& beta, const S& p, const S& q, const S& Ft, const S& edge,
+                   const seta_plan& plan, S F[4], T u14[2]) const {
+    using std::fabs;
+    const auto& d = base.d;
+    const bool beam_long = (mask & limit_beam) != 0, spatula_long = (mask & limit_spatula) != 0;
+    const bool angles = (!beam_long && !plan.beam.direct) || (!spatula_long && !plan.spatula.direct);
+    const auto g = make_seta_geometry<E1, E2>(d, Fn, beta, p, q, Ft, edge, angles);
+    u14[0] = u14[1] = 1;
+    if (spatula_long)
+      F[0] = separatrix_gap(g.spatula) *
+             (value_of(d.l2) / (fabs(value_of(g.spatula.M)) + value_of(g.spatula.N)));
+    else
+      F[0] = segment_length<Policy>(g.spatula, plan.spatula, g.psi_s2, g.X3_s2, g.psi_e2, g.X3_e2, &u14[1],
+                                    &g.trig2) - d.l2;
+    if (beam_long)
+      F[1] = separatrix_gap(g.beam) * (value_of(d.l1) / (fabs(value_of(g.beam.M)) + value_of(g.beam.N)));
+    else
+      F[1] = segment_length<Policy>(g.beam, plan.beam, g.psi_s1, g.X3_s1, g.psi_e1, g.X3_e1, &u14[0],
+                                    &g.trig1) - d.l1;
+    F[2] = g.F3;
+    F[3] = g.F4;
+  }
+
+  bool eval(const vec& z, T mu, const plan_type& plan, vec& F, mat& J, vec* dF_dmu, T u14[2]) const {
+    (void)dF_dmu;  // not used by newton_fixed_ft
+    using S = dual<T, 4>;
+    S r[4];
+    T Ft, edge;
+    base.forces(mu, Ft, edge);
+    residual_of<S>(S::variable(z[0], 0), S::variable(z[1], 1), S::variable(z[2], 2), S::variable(z[3], 3), S(Ft),
+                   S(edge), plan, r, u14);
+    for (int i = 0; i < 4; ++i) {
+      F[i] = r[i].v;
+      for (int j = 0; j < 4; ++j) J(i, j) = r[i].d[j];
+    }
+    return F.allFinite() && J.allFinite();
+  }
+
+  T step_norm(const vec& dz, const vec& z) const { return base.step_norm(dz, z); }
+
+  // The base plan with the limit segments' plans blanked (their length is not measured).
+  plan_type plan(const vec& z, T mu) const {
+    auto p = plan_at_solution(base, z, mu);
+    if (mask & limit_beam) p.beam = segment_plan();
+    if (mask & limit_spatula) p.spatula = segment_plan();
+    return p;
+  }
+
+  bool plan_valid(const plan_type& p, const vec& z, T mu, const T u14[2]) const {
+    T Ft, edge;
+    base.forces(mu, Ft, edge);
+    const bool angles = !p.beam.direct || !p.spatula.direct;
+    const auto g = make_seta_geometry<E1, E2>(base.d, z[0], z[1], z[2], z[3], Ft, edge, angles);
+    const bool beam_ok = (mask & limit_beam) ||
+                         segment_plan_valid(g.beam, p.beam, g.psi_s1, g.X3_s1, g.psi_e1, g.X3_e1, u14[0], g.h1);
+    const bool spatula_ok = (mask & limit_spatula) || segment_plan_valid(g.spatula, p.spatula, g.psi_s2, g.X3_s2,
+                                                                         g.psi_e2, g.X3_e2, u14[1], g.h2);
+    return beam_ok && spatula_ok;
+  }
+};
+
+// Newton on the limit system with plan refresh (as solve_with_plans for the full system).
+template <class T, class Policy, bool E1, bool E2>
+inline bool solve_separatrix(const separatrix_system<T, Policy, E1, E2>& sys, typename seta_system<T, Policy, E1, E2>::vec& z,
+                             T mu, seta_plan& plan, T tol, int& iterations) {
+  for (int round = 0; round < 4; ++round) {
+    if (seta_system<T, Policy, E1, E2>::plan_state(plan) != segment_state::ok) return false;
+    int its = 0;
+    T u14[2] = {1, 1};
+    const newton_code code = newton_fixed_ft(sys, z, mu, plan, tol, 40, its, u14);
+    iterations += its;
+    if (code != newton_code::converged) return false;
+    if (sys.plan_valid(plan, z, mu, u14)) return true;
+    plan = sys.plan(z, mu);
+  }
+  return false;
+}
+
+// One segment as the exact forms measure it with R(1) = side * gap_t (side +1: rotation, -1:
+// libration), from ends psi_s, psi_e (psi = theta - phi) with the given rate signs. False where no
+// such segment exists (f3 < 0 at an end, or no consistent path).
+template <class Policy, bool E, class T>
+inline bool segment_beside_separatrix(T EI, T c, T N, T psi_s, T sign_s, T psi_e, T sign_e, T gap_t, T& length,
+                                      int& turning) {
+  using std::sin; using std::sqrt;
+  const T M = N + (E ? c * N * N / 2 : T(0)) + gap_t;
+  const auto g = make_segment<E>(EI, c, M, N);
+  const T f3s = seg_f3(g, sin(psi_s)), f3e = seg_f3(g, sin(psi_e));
+  if (!(f3s >= 0) || !(f3e >= 0)) return false;
+  const T X3s = sign_s * sqrt(f3s), X3e = sign_e * sqrt(f3e);
+  T L = std::numeric_limits<T>::quiet_NaN();
+  const segment_plan plan = plan_segment<Policy>(g, psi_s, X3s, psi_e, X3e, T(0.75), &L);
+  if (plan.state != segment_state::ok) return false;
+  if (plan.direct) L = segment_length<Policy>(g, plan, psi_s, X3s, psi_e, X3e);
+  if (!(L > 0)) return false;
+  length = L;
+  turning = plan.turning_points;
+  return true;
+}
+
+// The elastic length l sqrt(N/EI) and the relative separatrix distance R(1)/(|M| + N) of both
+// segments at a state of the full system.
+template <class T, class Policy, bool E1, bool E2>
+inline void separatrix_measures(const seta_system<T, Policy, E1, E2>& sys, const typename seta_system<T, Policy, E1, E2>::vec& z,
+                                T mu, T lengths[2], T gaps[2]) {
+  using std::fabs; using std::sqrt;
+  T Ft, edge;
+  sys.forces(mu, Ft, edge);
+  const auto g = make_seta_geometry<E1, E2>(sys.d, z[0], z[1], z[2], z[3], Ft, edge, false);
+  lengths[0] = sys.d.l1 * sqrt(g.beam.N / sys.d.EI1);
+  lengths[1] = sys.d.l2 * sqrt(g.spatula.N / sys.d.EI2);
+  gaps[0] = separatrix_gap(g.beam) / (fabs(g.beam.M) + g.beam.N);
+  gaps[1] = separatrix_gap(g.spatula) / (fabs(g.spatula.M) + g.spatula.N);
+}
+
+// Segments that a line stalled next to: at least 10 elastic lengths, within 1e-6 of the separatrix.
+template <class T>
+inline int separatrix_mask(const T lengths[2], const T gaps[2]) {
+  using std::fabs;
+  int mask = 0;
+  if (lengths[0] >= 10 && fabs(gaps[0]) <= T(1e-6)) mask |= limit_beam;
+  if (lengths[1] >= 10 && fabs(gaps[1]) <= T(1e-6)) mask |= limit_spatula;
+  return mask;
+}
+
+// The exact state from the limit state z at mu (see the header comment): each limit segment's
+// separatrix distance delta from its length, and z corrected to first order in it. True, with z
+// the exact state, where the correction is certain to tol; turning[]: the limit segments'
+// turning points, which must equal expected[] (the followed line's at its last node).
+template <class T, class Policy, bool E1, bool E2>
+inline bool separatrix_state_exact(const separatrix_system<T, Policy, E1, E2>& lim, typename seta_system<T, Policy, E1, E2>::vec& z,
+                                   T mu, const seta_plan& plan, T tol, const int expected[2], int turning[2]) {
+  using std::exp; using std::fabs; using std::log;
+  using vec = typename seta_system<T, Policy, E1, E2>::vec;
+  using mat = typename seta_system<T, Policy, E1, E2>::mat;
+  const auto& d = lim.base.d;
+  vec F;
+  mat J;
+  T u14[2];
+  if (!lim.eval(z, mu, plan, F, J, nullptr, u14)) return false;
+  const Eigen::PartialPivLU<mat> lu(J);
+  T Ft, edge;
+  lim.base.forces(mu, Ft, edge);
+  const auto g = make_seta_geometry<E1, E2>(d, z[0], z[1], z[2], z[3], Ft, edge, true);
+  vec shift = vec::Zero();
+  T uncertainty = 0;
+  bool certain = true;
+  // One limit segment: c its constants, row its residual row, ends (psi, X3) as in the geometry.
+  auto delta_of = [&](const auto& c, auto E, int row, T EI, T cc, T len, T ps, T X3s, T pe, T X3e, int seg) {
+    constexpr bool Ext = decltype(E)::value;
+    const T scale = fabs(c.M) + c.N;
+    // Lengths at two distances the forms resolve (M = N + c N^2/2 + delta is rounded to about eps
+    // of the scale, and the forms form M + b3 from it again: 2^-36 and 2^-38 of the scale keep
+    // delta to about 1e-4), then L(delta) = L_b + slope log(delta_b / delta), exact to
+    // O(delta log delta): the dwell at the saddle, slope = passages x tau, with tau =
+    // sqrt(EI / (N (1 + c N))) the inverse of the saddle's rate.
+    const T da = std::ldexp(scale, -36), db = std::ldexp(scale, -38);
+    const T ss = X3s >= 0 ? T(1) : T(-1), se = X3e >= 0 ? T(1) : T(-1);
+    const T tau = std::sqrt(EI / (c.N * (1 + cc * c.N)));
+    int sides = 0;
+    vec move = vec::Zero();
+    T unc = 0;
+    for (T side : {T(1), T(-1)}) {
+      T La, Lb;
+      int ta, tb;
+      if (!segment_beside_separatrix<Policy, Ext>(EI, cc, c.N, ps, ss, pe, se, side * da, La, ta) ||
+          !segment_beside_separatrix<Policy, Ext>(EI, cc, c.N, ps, ss, pe, se, side * db, Lb, tb))
+        continue;  // no segment with these ends on this side of the separatrix
+      const T slope = (Lb - La) / log(da / db);
+      const T passages = slope / tau;
+      if (ta != tb || tb != expected[seg] || !(passages > T(0.5)) ||
+          !(fabs(passages - std::round(passages)) < T(1e-3)))
+        return false;
+      // Longer than the segment already at delta_b: the exact |delta| is larger, and the law
+      // (good while delta is small) gives a start for the segment's own length equation, not
+      // the state.
+      if (!(Lb < len)) certain = false;
+      ++sides;
+      const T delta = side * db * exp(-(len - Lb) / slope);
+      turning[seg] = tb;
+      // The correction's relative uncertainty: the slope's (two lengths each good to ~1e-4 tau)
+      // over the extrapolated logarithm, and delta_b's own.
+      const T rel = T(2e-4) * (1 + (len - Lb) / slope);
+      vec e = vec::Zero();
+      e[row] = len / scale;  // the limit row is l delta / scale
+      move = lu.solve(e) * delta;
+      unc = lim.step_norm(move, z) * rel;
+    }
+    // Exactly one side: the ends' rate signs must tell libration from rotation.
+    if (sides != 1) return false;
+    shift += move;
+    uncertainty += unc;
+    return true;
+  };
+  if ((lim.mask & limit_beam) && !delta_of(g.beam, std::integral_constant<bool, E1>(), 1, d.EI1, d.c1, d.l1,
+                                           g.psi_s1, g.X3_s1, g.psi_e1, g.X3_e1, 0))
+    return false;
+  if ((lim.mask & limit_spatula) && !delta_of(g.spatula, std::integral_constant<bool, E2>(), 0, d.EI2, d.c2, d.l2,
+                                              g.psi_s2, g.X3_s2, g.psi_e2, g.X3_e2, 1))
+    return false;
+  z += shift;
+  return certain && uncertainty <= tol / 4;
+}
+
+// The state at a target mu from the marched limit state z: the limit system with every nonempty
+// subset of the limit segments (largest first: a segment not yet long enough for its limit to be
+// certified is measured by its length equation again, started from the law's estimate). The full
+// system alone is not tried: re-planned next to a separatrix it converged to states 1e-7 to 1e-5
+// off in Fn in the campaign re-run (checked in arbitrary precision), where the line's own
+// continuation had failed. True with r set where a state is certified and its admissibility decided.
+template <class T, class Policy, bool E1, bool E2>
+inline bool separatrix_target_state(const separatrix_system<T, Policy, E1, E2>& lim, const typename seta_system<T, Policy, E1, E2>::vec& z,
+                                    T mu, T Ft, T tol, const int expected[2], int iterations, critical_state<T>& r) {
+  using vec = typename seta_system<T, Policy, E1, E2>::vec;
+  const auto& sys = lim.base;
+  int masks[3] = {lim.mask, 0, 0};
+  int count = 1;
+  if (lim.mask == (limit_beam | limit_spatula)) {
+    masks[count++] = limit_spatula;
+    masks[count++] = limit_beam;
+  }
+  vec start = z;  // the limit state corrected to first order in delta where the law gives it
+  for (int m = 0; m < count; ++m) {
+    const int mask = masks[m];
+    vec zs = start;
+    int its = iterations;
+    int turning[2];
+    const separatrix_system<T, Policy, E1, E2> sub{sys, mask};
+    seta_plan plan = sub.plan(zs, mu);
+    if (!solve_separatrix(sub, zs, mu, plan, tol, its)) continue;
+    sys.turning_points(plan, zs, mu, turning[0], turning[1]);
+    if (!separatrix_state_exact(sub, zs, mu, plan, tol, expected, turning)) {
+      if (m == 0) start = zs;
+      continue;
+    }
+    r = critical_state<T>();
+    r.Ft = Ft;
+    r.status = critical_status::converged;
+    r.iterations = its;
+    r.Fn = zs[0];
+    r.theta_joint = sys.theta_joint(zs);
+    r.theta_rate_joint = sys.rate_joint(zs);
+    r.theta_rate_base = sys.rate_base(zs);
+    r.turning_points_beam = turning[0];
+    r.turning_points_spatula = turning[1];
+    apply_admissibility(sys, r);
+    // A state whose admissibility could not be decided stays unknown.
+    if (r.status == critical_status::inadmissible && !(r.min_z == r.min_z) &&
+        !(r.max_axial_strain > sys.strain_limit))
+      return false;
+    return true;
+  }
+  return false;
+}
+
+// States at the requested targets (indices `which` into Ft/out, status not_reached) beyond the end
+// of a line that stalled or whose corrector failed next to a separatrix: the limit system followed
+// in mu from the line's last node, each target's state accepted where separatrix_state_exact holds.
+template <class T, class Policy, bool E1, bool E2>
+inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
+                                 const traced_line<seta_system<T, Policy, E1, E2>>& line, T scale, const T* Ft,
+                                 std::size_t count, const std::size_t* which, T tol, critical_state<T>* out) {
+  using std::fabs;
+  using vec = typename seta_system<T, Policy, E1, E2>::vec;
+  if (!(line.end == line_end::stalled || line.end == line_end::no_convergence) || line.nodes.size() < 2) return;
+  const auto& last = line.nodes.back();
+  const T mu0 = last.Ft;
+  // The line must stop at the far end of what it covered (else the targets beyond were passed by
+  // another part of it, and the first crossing is not the limit's).
+  T lo = mu0, hi = mu0;
+  for (const auto& nd : line.nodes) {
+    lo = std::min(lo, nd.Ft);
+    hi = std::max(hi, nd.Ft);
+  }
+  const T dir = mu0 == hi ? T(1) : (mu0 == lo ? T(-1) : T(0));
+  if (dir == 0) return;
+  std::vector<std::pair<T, std::size_t>> targets;
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::size_t i = which[k];
+    if (out[i].status != critical_status::not_reached) continue;
+    const T mu = line_parameter(sys, Ft[i]);
+    if ((mu - mu0) * dir > 0) targets.push_back({(mu - mu0) * dir, i});
+  }
+  if (targets.empty()) return;
+  std::sort(targets.begin(), targets.end());
+  T lengths[2], gaps[2];
+  separatrix_measures(sys, last.z, mu0, lengths, gaps);
+  int mask = separatrix_mask(lengths, gaps);
+  if (!mask) return;
+  int expected[2];
+  sys.turning_points(line.plans.back(), last.z, mu0, expected[0], expected[1]);
+  separatrix_system<T, Policy, E1, E2> lim{sys, mask};
+  vec z = last.z;
+  seta_plan plan = lim.plan(z, mu0);
+  int its = 0;
+  if (!solve_separatrix(lim, z, mu0, plan, tol, its)) return;
+  // March in mu: secant predictor, the step grown after a success and halved after a failure.
+  T mu = mu0, h = T(0.01) * scale;
+  vec z_prev = z;
+  T mu_prev = mu0;
+  const T h_min = T(1e-9) * scale, h_max = T(0.08) * scale;
+  std::size_t next = 0;
+  for (int step = 0; step < 4000 && next < targets.size(); ++step) {
+    const T goal = mu0 + dir * targets[next].first;
+    const T mu_try = fabs(goal - mu) <= h ? goal : mu + dir * h;
+    if (fabs(mu_try) > sys.mu_limit()) break;
+    vec zt = z;
+    if (mu != mu_prev) zt += (z - z_prev) * ((mu_try - mu) / (mu - mu_prev));
+    seta_plan pt = plan;
+    int it = 0;
+    const bool ok = solve_separatrix(lim, zt, mu_try, pt, tol, it) &&
+                    lim.step_norm(zt - z, z) <= T(0.5) + 4 * fabs(mu_try - mu) / scale;
+    its += it;
+    if (!ok) {
+      h /= 2;
+      if (h < h_min) break;
+      continue;
+    }
+    z_prev = z;
+    mu_prev = mu;
+    z = zt;
+    mu = mu_try;
+    plan = pt;
+    h = std::min(h * T(1.5), h_max);
+    // A segment that has come next to its separatrix on the way joins the limit ones.
+    separatrix_measures(sys, z, mu, lengths, gaps);
+    const int grown = mask | separatrix_mask(lengths, gaps);
+    if (grown != mask) {
+      mask = lim.mask = grown;
+      plan = lim.plan(z, mu);
+      if (!solve_separatrix(lim, z, mu, plan, tol, its)) break;
+    }
+    while (next < targets.size() && mu == mu0 + dir * targets[next].first) {
+      const std::size_t i = targets[next].second;
+      critical_state<T> r;
+      if (separatrix_target_state(lim, z, mu, Ft[i], tol, expected, its, r)) out[i] = r;
+      ++next;
+    }
+  }
+}
+
+}  // namespace detail
+}  // namespace gecko

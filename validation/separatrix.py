@@ -1,0 +1,111 @@
+"""States recovered past a followed line's stall, checked in arbitrary precision (issue 13, item 5).
+
+The solver follows a line that stalls next to a segment's separatrix on in the separatrix limit
+(gecko/seta/detail/separatrix_limit.hpp, docs/theory/two_level_seta.md "Long segments"). Those
+states lie tens to hundreds of elastic lengths deep, where a shot in double precision amplifies
+its start's rounding past any use (validation/verify.py is inconclusive there), so a seeded sample
+of them is solved again by the arbitrary-precision quadrature route of
+tests/data/seta_separatrix_mp.py (length equations by tanh-sinh quadrature, each long segment's
+unknown replaced by the logarithm of its separatrix distance), started from gecko's state (which
+picks the branch) and compared:
+
+    PYTHONPATH=<gecko> python3 -m validation.separatrix validation/rerun_10000.npz --sample 24 --seed 0 \\
+        --json validation/results/separatrix_sample.json
+
+Sampled: states whose campaign status was 1 or 6 (given up) and that the re-run solves (0 or 7).
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import multiprocessing as mpc
+import os
+import sys
+import time
+
+import numpy as np
+
+from validation import campaign
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "tests", "data"))
+
+
+def check(job):
+    import gecko
+    from mpmath import mp
+    import seta_separatrix_mp as ssm
+
+    i, j, p, fts = job
+    d = dict(zip(campaign.FIELDS, map(float, p)))
+    line = gecko.TwoLevelSeta(**d).critical_line(Ft=list(map(float, fts)), errors="nan")
+    Ft = float(fts[j])
+    Fn, beta = float(line.Fn[j]), float(line.theta_joint[j])
+    rp, rq = float(line.theta_rate_joint[j]), float(line.theta_rate_base[j])
+    turns = (int(line.turning_points_beam[j]), int(line.turning_points_spatula[j]))
+    N = math.hypot(Fn, Ft)
+    L1, L2 = d["l1"] * math.sqrt(N / d["EI1"]), d["l2"] * math.sqrt(N / d["EI2"])
+    out = dict(design=int(i), Ft=Ft, status=int(line.status[j]), Fn=Fn, beta=beta, turning=list(turns),
+               elastic_lengths=[round(L1, 1), round(L2, 1)], min_z=float(line.min_z[j]))
+    if out["status"] not in (0, 7):
+        out["verdict"] = "not_solved_now"
+        return out
+    mp.dps = int(40 + (L1 + L2) / 2)
+    t = time.time()
+    try:
+        r = ssm.quad_route(d, Ft, Fn, beta, 1 if rp > 0 else -1, 1 if rq > 0 else -1, turns,
+                           (L1 >= 15 and turns[0] > 0, L2 >= 15 and turns[1] > 0))
+    except Exception as e:  # a radicand < 0 on the assumed path, a singular Jacobian, ...
+        r = None
+        out["error"] = repr(e)[:160]
+    out["seconds"] = round(time.time() - t, 1)
+    if r is None:
+        out["verdict"] = "undecided"
+        return out
+    out["dFn_rel"] = abs(float(r[0]) - Fn) / max(1.0, abs(Fn))
+    out["dbeta"] = abs(float(r[1]) - beta)
+    out["quad_error"] = float(r[3])
+    if not r[3] < 1e-20:  # the quadrature's own error estimate: too large to decide at 1e-11
+        out["verdict"] = "undecided"
+    else:
+        out["verdict"] = "correct" if out["dFn_rel"] <= 1e-11 and out["dbeta"] <= 1e-11 else "wrong"
+    return out
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("npz")
+    ap.add_argument("--sample", type=int, default=24)
+    ap.add_argument("--seed", type=int, default=0)
+    ap.add_argument("--workers", type=int, default=2)
+    ap.add_argument("--json", default=None)
+    a = ap.parse_args(argv)
+    camp = np.load(os.path.join(HERE, "data", "stress_10000_states.npz"))
+    now = np.load(a.npz)
+    given_up = np.isin(camp["status"], (1, 6)) & np.isin(now["status"], (0, 7))
+    idx = np.argwhere(given_up)
+    rng = np.random.default_rng(a.seed)
+    pick = idx[rng.choice(len(idx), size=min(a.sample, len(idx)), replace=False)]
+    jobs = [(int(i), int(j), camp["P"][i], camp["FT"][i]) for i, j in pick]
+    t0 = time.time()
+    with mpc.Pool(a.workers) as pool:
+        results = pool.map(check, jobs, chunksize=1)
+    verdicts = {}
+    for r in results:
+        verdicts[r["verdict"]] = verdicts.get(r["verdict"], 0) + 1
+    decided = [r for r in results if "dFn_rel" in r]
+    summary = dict(npz=a.npz, recovered=int(given_up.sum()), sample=len(jobs), seed=a.seed, verdicts=verdicts,
+                   max_dFn_rel=max((r["dFn_rel"] for r in decided), default=None),
+                   max_dbeta=max((r["dbeta"] for r in decided), default=None),
+                   longest_segment=max((max(r["elastic_lengths"]) for r in results), default=None),
+                   seconds=round(time.time() - t0, 1), states=results)
+    text = json.dumps(summary, indent=1)
+    print(json.dumps({k: v for k, v in summary.items() if k != "states"}, indent=1))
+    if a.json:
+        with open(a.json, "w") as f:
+            f.write(text + "\n")
+
+
+if __name__ == "__main__":
+    main()
