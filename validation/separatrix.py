@@ -12,7 +12,10 @@ picks the branch) and compared:
     PYTHONPATH=<gecko> python3 -m validation.separatrix validation/rerun_10000.npz --sample 24 --seed 0 \\
         --json validation/results/separatrix_sample.json
 
-Sampled: states whose campaign status was 1 or 6 (given up) and that the re-run solves (0 or 7).
+Sampled: states whose campaign status was 1 or 6 (given up) and that the re-run solves (0 or 7);
+with ``--since OLD.npz`` (an earlier re-run's ``recheck --save`` file) only those that OLD had not
+solved either, i.e. the states a solver change newly recovers. A state the route cannot settle in
+``--time-limit`` seconds (300 by default) counts as undecided.
 """
 from __future__ import annotations
 
@@ -21,6 +24,7 @@ import json
 import math
 import multiprocessing as mpc
 import os
+import signal
 import sys
 import time
 
@@ -32,12 +36,20 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "tests", "data"))
 
 
+class _Timeout(Exception):
+    pass
+
+
+def _alarm(signum, frame):
+    raise _Timeout()
+
+
 def check(job):
     import gecko
     from mpmath import mp
     import seta_separatrix_mp as ssm
 
-    i, j, p, fts = job
+    i, j, p, fts, limit = job
     d = dict(zip(campaign.FIELDS, map(float, p)))
     line = gecko.TwoLevelSeta(**d).critical_line(Ft=list(map(float, fts)), errors="nan")
     Ft = float(fts[j])
@@ -53,12 +65,25 @@ def check(job):
         return out
     mp.dps = int(40 + (L1 + L2) / 2)
     t = time.time()
+    # A state the route cannot settle within the time limit is undecided, not waited on (at
+    # hundreds of digits its Newton can take hours where the quadrature does not converge).
+    if limit:
+        signal.signal(signal.SIGALRM, _alarm)
+        signal.alarm(max(1, int(limit)))
     try:
+        # A long segment with turning points librates (they lie at the saddle); without, it
+        # rotates past the saddle.
         r = ssm.quad_route(d, Ft, Fn, beta, 1 if rp > 0 else -1, 1 if rq > 0 else -1, turns,
-                           (L1 >= 15 and turns[0] > 0, L2 >= 15 and turns[1] > 0))
+                           (L1 >= 15, L2 >= 15), rotation=(turns[0] == 0, turns[1] == 0))
+    except _Timeout:
+        r = None
+        out["error"] = f"time limit ({limit} s)"
     except Exception as e:  # a radicand < 0 on the assumed path, a singular Jacobian, ...
         r = None
         out["error"] = repr(e)[:160]
+    finally:
+        if limit:
+            signal.alarm(0)
     out["seconds"] = round(time.time() - t, 1)
     if r is None:
         out["verdict"] = "undecided"
@@ -80,14 +105,19 @@ def main(argv=None):
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--workers", type=int, default=2)
     ap.add_argument("--json", default=None)
+    ap.add_argument("--since", default=None, help="sample only states this earlier re-run (.npz) gave up on")
+    ap.add_argument("--time-limit", type=float, default=300,
+                    help="seconds per state before it counts as undecided (0: none)")
     a = ap.parse_args(argv)
     camp = np.load(os.path.join(HERE, "data", "stress_10000_states.npz"))
     now = np.load(a.npz)
     given_up = np.isin(camp["status"], (1, 6)) & np.isin(now["status"], (0, 7))
+    if a.since:
+        given_up &= np.isin(np.load(a.since)["status"], (1, 6))
     idx = np.argwhere(given_up)
     rng = np.random.default_rng(a.seed)
     pick = idx[rng.choice(len(idx), size=min(a.sample, len(idx)), replace=False)]
-    jobs = [(int(i), int(j), camp["P"][i], camp["FT"][i]) for i, j in pick]
+    jobs = [(int(i), int(j), camp["P"][i], camp["FT"][i], a.time_limit) for i, j in pick]
     t0 = time.time()
     with mpc.Pool(a.workers) as pool:
         results = pool.map(check, jobs, chunksize=1)
@@ -95,7 +125,7 @@ def main(argv=None):
     for r in results:
         verdicts[r["verdict"]] = verdicts.get(r["verdict"], 0) + 1
     decided = [r for r in results if "dFn_rel" in r]
-    summary = dict(npz=a.npz, recovered=int(given_up.sum()), sample=len(jobs), seed=a.seed, verdicts=verdicts,
+    summary = dict(npz=a.npz, since=a.since, time_limit=a.time_limit, recovered=int(given_up.sum()), sample=len(jobs), seed=a.seed, verdicts=verdicts,
                    max_dFn_rel=max((r["dFn_rel"] for r in decided), default=None),
                    max_dbeta=max((r["dbeta"] for r in decided), default=None),
                    longest_segment=max((max(r["elastic_lengths"]) for r in results), default=None),

@@ -6,7 +6,8 @@ delta = R(1) = M - N - c N^2/2 ~ exp(-l sqrt(N/EI)); its state is fixed by delta
 solver in (Fn, beta) must carry delta's digits in Fn or beta. Both routes here do.
 
   * "quad": the length equations of seta_quad.py (tanh-sinh quadrature of dtheta/|theta'| split at
-    the turning angles), with each long librating segment's unknown replaced by log(-delta): the
+    the turning angles), with each long segment's unknown replaced by log(-delta) (a libration,
+    delta < 0) or log(delta) (a rotation past the saddle, delta > 0): the
     spatula's delta2 = Ft + w - N - c2 N^2/2 gives N and so Fn; the beam's delta1 gives beta as the
     root of M1(beta) = N + c1 N^2/2 + delta1 (M1 of paper 001 eq (12)). Newton in (log(-delta2) or
     Fn, log(-delta1) or beta) at mp.dps = 40 + the segments' elastic lengths / 2.
@@ -75,9 +76,11 @@ def _seg_length(EI, M, N, c, phi, th_start, th_end, turns):
     return total, errt
 
 
-def quad_route(d, Ft, Fn0, beta0, sign_p, sign_q, turns, long_seg, iterations=40):
-    """d: design (floats, inf allowed); long_seg = (beam_long, spatula_long); turns = (beam, spatula).
+def quad_route(d, Ft, Fn0, beta0, sign_p, sign_q, turns, long_seg, iterations=40, rotation=(False, False)):
+    """d: design (floats, inf allowed); long_seg = (beam_long, spatula_long); turns = (beam, spatula);
+    rotation: which long segments are rotations (delta > 0), the others librations (delta < 0).
     Returns (Fn, beta, residual, quadrature error estimate) in mp, or None."""
+    side = [1 if r else -1 for r in rotation]  # the sign of delta of each long segment
     dm = {k: (mp.inf if v == math.inf else mpf(v)) for k, v in d.items()}
     c1, c2 = _c(d["EA1"]), _c(d["EA2"])
     Ft = mpf(Ft)
@@ -87,7 +90,7 @@ def quad_route(d, Ft, Fn0, beta0, sign_p, sign_q, turns, long_seg, iterations=40
     def Fn_of(a):
         if not long_seg[1]:
             return a
-        delta2 = -mp.exp(a)
+        delta2 = side[1] * mp.exp(a)
         m = M2 - delta2
         N = m if c2 == 0 else 2 * m / (1 + mp.sqrt(1 + 2 * c2 * m))
         return sgn_fn * mp.sqrt((N - Ft) * (N + Ft))
@@ -97,7 +100,7 @@ def quad_route(d, Ft, Fn0, beta0, sign_p, sign_q, turns, long_seg, iterations=40
             return b
         N = mp.sqrt(Fn * Fn + Ft * Ft)
         phi = mp.atan2(Fn, Ft)
-        target = N + c1 * N * N / 2 - mp.exp(b)
+        target = N + c1 * N * N / 2 + side[0] * mp.exp(b)
 
         def g(beta):
             v = mp.sin(beta - dm["alpha2"] - phi)
@@ -119,7 +122,7 @@ def quad_route(d, Ft, Fn0, beta0, sign_p, sign_q, turns, long_seg, iterations=40
         return [L1 - dm["l1"], L2 - dm["l2"]], Fn, beta
 
     # Start: the logarithms from the state's elastic lengths (Newton finds them: the lengths are
-    # linear in log(-delta) there), the natural unknowns from the state.
+    # linear in log|delta| there), the natural unknowns from the state.
     N0 = math.hypot(Fn0, Ft)
     x = [mpf(0), mpf(0)]
     x[0] = mp.log(M2 + N0) - d["l2"] * math.sqrt(N0 / d["EI2"]) if long_seg[1] else mpf(Fn0)

@@ -116,7 +116,7 @@ TEST_CASE("the walk past the saddle agrees with the walk calibrated to the lengt
 }
 
 TEST_CASE("the separatrix correction refuses a state it cannot certify", "[seta][separatrix]") {
-  // Injected failures at a recovered state: turning points other than the line's, and a limit
+  // Injected failures at a recovered state: turning points two away from the line's, and a limit
   // segment that is not yet long enough (the beam at Ft = 150, 17 elastic lengths: its length at
   // delta_b exceeds l1).
   const auto s = design_27();
@@ -138,13 +138,19 @@ TEST_CASE("the separatrix correction refuses a state it cannot certify", "[seta]
     int its = 0;
     INFO("Ft " << pr.Ft << " mask " << pr.mask);
     REQUIRE(gecko::detail::solve_separatrix(lim, z, mu, plan, 1e-12, its));
-    const int expected[2] = {1, 1}, wrong[2] = {1, 3};
-    int turning[2] = {st.turning_points_beam, st.turning_points_spatula};
+    // The limit segments' turning points come from the side of the separatrix that fits the ends.
+    // Expected within one of them (an end through the saddle's orientation); two away is a path
+    // with a loop more, refused.
+    const int expected[2] = {0, 2}, wrong[2] = {1, 3};
+    int turning[2] = {(pr.mask & gecko::detail::limit_beam) ? -1 : st.turning_points_beam,
+                      (pr.mask & gecko::detail::limit_spatula) ? -1 : st.turning_points_spatula};
     auto zc = z;
     CHECK(gecko::detail::separatrix_state_exact(lim, zc, mu, plan, 1e-12, expected, turning) == pr.certain);
-    if (pr.certain) {  // the corrected state is the recovered one
+    if (pr.certain) {  // the corrected state is the recovered one, with its turning points
       CHECK(std::fabs(zc[0] - st.Fn) <= 1e-11 * std::max(1.0, std::fabs(st.Fn)));
       CHECK(std::fabs(zc[1] - st.theta_joint) <= 1e-11);
+      CHECK(turning[0] == st.turning_points_beam);
+      CHECK(turning[1] == st.turning_points_spatula);
     }
     zc = z;
     CHECK_FALSE(gecko::detail::separatrix_state_exact(lim, zc, mu, plan, 1e-12, wrong, turning));

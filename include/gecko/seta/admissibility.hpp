@@ -55,6 +55,7 @@
 
 #include "gecko/elliptic/first_quadrant_sincos.hpp"
 #include "gecko/seta/critical_residual.hpp"
+#include "gecko/seta/detail/separatrix_scales.hpp"
 #include "gecko/seta/elastica_segment.hpp"
 #include "gecko/seta/two_level_seta.hpp"
 
@@ -585,20 +586,23 @@ inline bool walk_past_saddle(const height_segment<T>& g0, T theta_s, T rate_s, T
   using std::floor; using std::sqrt;
   if (turning < 1 || !(g0.N > 0)) return false;
   const T pi = seta_pi<T>();
-  const T delta_p = std::ldexp(std::fabs(g0.M) + g0.N, -36);
+  const T delta_p = std::ldexp(std::fabs(g0.M) + g0.N, separatrix_resolved_exponent);
   const T eta_p = sqrt(2 * delta_p / (g0.N * (1 + g0.c * g0.N)));
   const height_segment<T> g = height_segment_near_saddle(g0.EI, g0.c, g0.N, g0.phi, eta_p);
   const T k = floor((theta_s - g.phi + pi / 2) / (2 * pi) + T(0.5));
   const T th_max = g.phi + g.psi_top + k * 2 * pi, th_min = g.phi - pi - g.psi_top + k * 2 * pi;
   // The pieces between turning points, each walked on its own (none has a turning point inside).
-  T ends[8];
-  if (turning > 6) return false;
+  // At most this many turning points (the plans count up to 8): a path with more is refused,
+  // and its state's admissibility stays undecided.
+  constexpr int max_turning = 6;
+  if (turning > max_turning) return false;
+  T ends[max_turning];
   T dir = rate_s > 0 ? T(1) : (rate_s < 0 ? T(-1) : (std::fabs(theta_s - th_max) <= std::fabs(theta_s - th_min) ? T(-1) : T(1)));
   for (int i = 0; i < turning; ++i) {
     ends[i] = dir > 0 ? th_max : th_min;
     dir = -dir;
   }
-  segment_walk<T> pieces[7];
+  segment_walk<T> pieces[max_turning + 1];
   T walked = 0;
   for (int i = 0; i <= turning; ++i) {
     const T a = i == 0 ? theta_s : ends[i - 1], b = i == turning ? theta_e : ends[i];

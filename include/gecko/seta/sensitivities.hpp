@@ -20,6 +20,7 @@
 #include "gecko/seta/critical_line.hpp"
 #include "gecko/seta/detail/dual.hpp"
 #include "gecko/seta/detail/separatrix_limit.hpp"
+#include "gecko/seta/detail/separatrix_scales.hpp"
 #include "gecko/seta/detail/seta_system.hpp"
 #include "gecko/seta/extensibility.hpp"
 
@@ -53,7 +54,9 @@ inline void design_derivatives(const TwoLevelSeta<T>& s, const critical_state<T>
     T lengths[2], gaps[2];
     separatrix_measures(sys, z, mu, lengths, gaps);
     for (int i = 0; i < 2; ++i)
-      if (lengths[i] >= 10 && std::fabs(gaps[i]) < std::ldexp(T(1), -40)) return;
+      if (lengths[i] >= T(separatrix_long_segment) &&
+          std::fabs(gaps[i]) < std::ldexp(T(1), separatrix_unresolved_exponent))
+        return;
   }
   const auto plan = sys.plan(z, mu);
   typename System::vec F;

@@ -1,0 +1,32 @@
+// gecko/seta/detail/separatrix_scales.hpp — the scales that decide when a segment is treated in
+// its separatrix limit, shared by the limit continuation (detail/separatrix_limit.hpp), the
+// admissibility walk past the saddle (admissibility.hpp) and the design derivatives
+// (sensitivities.hpp).
+//
+// docs/theory/two_level_seta.md, "Long segments": a tensioned segment l sqrt(N/EI) elastic lengths
+// long passes its saddle at the distance delta = M - N - c N^2/2 (paper 001 eq (8)), which shrinks
+// like exp(-l sqrt(N/EI)); delta is formed from the state by cancellation against |M| + N.
+#pragma once
+
+namespace gecko {
+namespace detail {
+
+// A segment this many elastic lengths long or longer is "long": its separatrix distance is below
+// about e^-10 of the scale, and the limit treatment applies to it.
+constexpr double separatrix_long_segment = 10;
+
+// A line stalled next to a long segment's separatrix when the relative distance
+// delta / (|M| + N) is at most this.
+constexpr double separatrix_stall_gap = 1e-6;
+
+// The smallest relative distance the Carlson forms resolve (to about 1e-4 in delta: M is rounded
+// to eps of the scale and the forms form M + b3 from it again): 2^-36. The limit's length law
+// is sampled there and two binades below, and the admissibility walk takes its proxy orbit there.
+constexpr int separatrix_resolved_exponent = -36;
+
+// Below 2^-40 of the scale a state's digits no longer resolve its separatrix distance: the length
+// equations, whose derivatives go like 1/delta, cannot be differentiated there.
+constexpr int separatrix_unresolved_exponent = -40;
+
+}  // namespace detail
+}  // namespace gecko
