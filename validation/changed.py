@@ -22,7 +22,11 @@ them on the states both solved (a change of the check itself shows there, not in
 
 "Silently wrong" uses the campaign's threshold and conclusiveness rule (campaign.classify), with
 the new solver's turning-point counts: a verifier root with other turning points than the state
-(another branch of the shot) is inconclusive, counted in ``other_branch``.
+(another branch of the shot) is inconclusive, counted in ``other_branch``. It judges Fn and beta
+(theta at the joint) separately: the shot can be conclusive in Fn and not in beta (its uncertainty
+in beta grows with the joint's sensitivity), so ``verified_conclusive_beta`` and
+``max_abs_dbeta_conclusive`` say how many of the checked states had beta judged and how far off the
+largest was, and ``moved_states`` lists the moved ones with their change in both.
 """
 from __future__ import annotations
 
@@ -84,8 +88,15 @@ def run(old_path: str, new_path: str) -> dict:
     cl = campaign.classify(new["P"], new["FT"], new["Fn"], new["beta"], status, v,
                            turns=(new["tpb"], new["tps"]))
     conclusive = check & ~cl["inconclusive_fn"]
+    conclusive_beta = conclusive & ~cl["inconclusive_beta"]
     wrong = cl["wrong_fn"] | cl["wrong_beta"]
     rows, cols = np.nonzero(wrong)
+    moved = []
+    if "Fn" in old:
+        for r, c in zip(*np.nonzero(masks["moved"])):
+            moved.append(dict(design=int(r), column=int(c), Ft=float(new["FT"][r, c]),
+                              rel_change_Fn=float(abs(new["Fn"][r, c] - old["Fn"][r, c]) / max(1.0, abs(old["Fn"][r, c]))),
+                              change_beta=float(new["beta"][r, c] - old["beta"][r, c])))
     return dict(states=int(new["status"].size), transitions=transitions(old["status"], new["status"]),
                 newly_solved=int(masks["newly_solved"].sum()), moved=int(masks["moved"].sum()) if "Fn" in old else None,
                 verified_conclusive=int(conclusive.sum()),
@@ -100,10 +111,16 @@ def run(old_path: str, new_path: str) -> dict:
                                      for r, c in zip(*np.nonzero(check & cl["other_branch"]))][:20],
                 silently_wrong=int(wrong.sum()),
                 wrong_states=[dict(design=int(r), column=int(c), Ft=float(new["FT"][r, c]),
-                                   Fn=float(new["Fn"][r, c]), rel_dFn=float(cl["rel"][r, c]))
+                                   Fn=float(new["Fn"][r, c]), rel_dFn=float(cl["rel"][r, c]),
+                                   dbeta=float(v["dbeta"][r, c]), wrong_in=[k for k in ("fn", "beta")
+                                                                            if cl["wrong_" + k][r, c]])
                               for r, c in zip(rows[:20], cols[:20])],
                 max_rel_dFn_conclusive=float(np.nanmax(np.where(conclusive, cl["rel"], np.nan)))
                 if conclusive.any() else None,
+                verified_conclusive_beta=int(conclusive_beta.sum()),
+                max_abs_dbeta_conclusive=float(np.nanmax(np.where(conclusive_beta, np.abs(v["dbeta"]), np.nan)))
+                if conclusive_beta.any() else None,
+                moved_states=moved[:20],
                 heights=height_changes(old, new),
                 seconds=round(time.time() - t0, 1))
 

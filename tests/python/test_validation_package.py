@@ -211,6 +211,37 @@ def test_changed_compares_lowest_heights_of_states_both_solved():
     assert changed.height_changes({"status": status}, new) is None
 
 
+def test_changed_judges_beta_as_well_as_fn(tmp_path, monkeypatch):
+    # validation/changed.py: a moved state whose Fn the verifier confirms but whose beta it finds
+    # 1e-6 off is silently wrong (in beta), and the moved states are listed with both changes.
+    from validation import campaign, changed
+    P = np.array([[1.0, 0.1, np.inf, 50.0, 1.0, 0.1, 0.5, 0.5, 1.0]])
+    FT = np.array([[1.0, 2.0, 3.0]])
+    status = np.zeros((1, 3), dtype=np.int8)
+    turns = np.zeros((1, 3), dtype=np.int64)
+    old = dict(P=P, FT=FT, status=status, Fn=np.array([[1.0, 2.0, 3.0]]), beta=np.array([[0.1, 0.2, 0.3]]),
+               tpb=turns, tps=turns)
+    new = dict(old, Fn=np.array([[1.0, 2.0 + 1e-9, 3.0]]), beta=np.array([[0.1, 0.2 + 1e-6, 0.3 + 1e-6]]))
+    np.savez(tmp_path / "old.npz", **old)
+    np.savez(tmp_path / "new.npz", **new)
+
+    def verify(P, FT, Fn, beta, status):
+        z = np.zeros(status.shape)
+        # the verifier's root is the old state; conclusive in both except beta in column 2
+        return dict(dFn=Fn - old["Fn"], dbeta=beta - old["beta"], fn_uncert=z + 1e-14,
+                    beta_uncert=np.array([[1e-14, 1e-14, 1e-6]]), turns_beam=turns, turns_spatula=turns,
+                    root_turns_beam=turns, root_turns_spatula=turns)
+
+    monkeypatch.setattr(campaign, "verify_states", verify)
+    r = changed.run(str(tmp_path / "old.npz"), str(tmp_path / "new.npz"))
+    assert r["moved"] == 2 and r["verified_conclusive"] == 2 and r["verified_conclusive_beta"] == 1
+    assert r["silently_wrong"] == 1
+    assert r["wrong_states"][0]["column"] == 1 and r["wrong_states"][0]["wrong_in"] == ["beta"]
+    assert abs(r["max_abs_dbeta_conclusive"] - 1e-6) < 1e-12
+    assert [m["column"] for m in r["moved_states"]] == [1, 2]
+    assert abs(r["moved_states"][1]["change_beta"] - 1e-6) < 1e-12
+
+
 def test_classify_takes_no_verdict_from_a_root_on_another_branch():
     """A verifier root 1e-6 away from the returned Fn, with its own uncertainty far below the
     threshold, flags the state wrong; the same root with other turning points than the state (at the

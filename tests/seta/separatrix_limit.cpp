@@ -168,3 +168,52 @@ TEST_CASE("no design derivatives where the state does not resolve its separatrix
     CHECK(std::isnan(d[1].dFn[static_cast<std::size_t>(j)]));
   }
 }
+
+TEST_CASE("a smaller limit system's state is refused where a measured segment is unresolved", "[seta][separatrix]") {
+  // separatrix_target_state tries the limit system with a subset of the limit segments, the others
+  // measured by their own length equations. Such a state is kept only where each measured segment
+  // resolves its separatrix distance and, if it was a limit segment, keeps the line's turning
+  // points within one. Injected at design 27's recovered states: Ft = 1000 (a segment beyond what
+  // its digits resolve), Ft = 150 (both resolved).
+  const auto s = design_27();
+  using System = gecko::detail::seta_system<double, gecko::policies::default_policy, false, true>;
+  const System sys(gecko::detail::make_seta_params(s));
+  const int beam = gecko::detail::limit_beam, spatula = gecko::detail::limit_spatula, both = beam | spatula;
+  const int bits[2] = {beam, spatula};
+  const auto got = gecko::critical_line_at(s, std::vector<double>{150.0, 1000.0});
+  for (const auto& st : got) {
+    REQUIRE(st.status == gecko::critical_status::converged);
+    const double mu = sys.mu_of(st.Ft);
+    const auto z = sys.from_guess(st.Fn, st.theta_joint, st.theta_rate_joint, st.theta_rate_base, st.Ft);
+    double lengths[2], gaps[2];
+    gecko::detail::separatrix_measures(sys, z, mu, lengths, gaps);
+    const int turning[2] = {st.turning_points_beam, st.turning_points_spatula};
+    INFO("Ft " << st.Ft << " elastic lengths " << lengths[0] << ", " << lengths[1] << " gaps " << gaps[0] << ", "
+               << gaps[1]);
+    int unresolved = 0;
+    for (int i = 0; i < 2; ++i) {
+      const bool u = gecko::detail::separatrix_unresolved(lengths, gaps, i);
+      unresolved += u;
+      // Measured by its own length equation (the other segment in the limit): refused exactly
+      // where unresolved.
+      CHECK(gecko::detail::measured_segments_resolved(sys, z, mu, both & ~bits[i], both, turning, turning) == !u);
+    }
+    // Both in the limit: nothing is measured by a length equation.
+    CHECK(gecko::detail::measured_segments_resolved(sys, z, mu, both, both, turning, turning));
+    if (st.Ft == 1000.0) {
+      CHECK(unresolved >= 1);
+      continue;
+    }
+    CHECK(unresolved == 0);
+    // Resolved, but the measured segment's turning points two away from the line's: another path.
+    for (int i = 0; i < 2; ++i) {
+      int one[2] = {turning[0], turning[1]}, two[2] = {turning[0], turning[1]};
+      one[i] += 1;
+      two[i] += 2;
+      CHECK(gecko::detail::measured_segments_resolved(sys, z, mu, both & ~bits[i], both, one, turning));
+      CHECK_FALSE(gecko::detail::measured_segments_resolved(sys, z, mu, both & ~bits[i], both, two, turning));
+      // A segment that was never a limit segment keeps whatever turning points the line gives it.
+      CHECK(gecko::detail::measured_segments_resolved(sys, z, mu, both & ~bits[i], both & ~bits[i], two, turning));
+    }
+  }
+}

@@ -54,9 +54,7 @@ inline void design_derivatives(const TwoLevelSeta<T>& s, const critical_state<T>
     T lengths[2], gaps[2];
     separatrix_measures(sys, z, mu, lengths, gaps);
     for (int i = 0; i < 2; ++i)
-      if (lengths[i] >= T(separatrix_long_segment) &&
-          std::fabs(gaps[i]) < std::ldexp(T(1), separatrix_unresolved_exponent))
-        return;
+      if (separatrix_unresolved(lengths, gaps, i)) return;
   }
   const auto plan = sys.plan(z, mu);
   typename System::vec F;

@@ -22,8 +22,9 @@
 // state moves by the limit system's Jacobian times it. Accepted only where the segment is already
 // shorter than l at delta_b, exactly one side of the separatrix fits the ends, the slope is a
 // whole number of passages, the turning points are within one of the followed line's (see
-// separatrix_state_exact), and the correction's uncertainty is below a quarter of the tolerance.
-// Elsewhere the state stays not reached.
+// separatrix_state_exact), the correction's uncertainty is below a quarter of the tolerance, and
+// a segment left to its own length equation resolves its separatrix distance
+// (measured_segments_resolved). Elsewhere the state stays not reached.
 #pragma once
 
 #include <algorithm>
@@ -205,6 +206,15 @@ inline int separatrix_mask(const T lengths[2], const T gaps[2]) {
   return mask;
 }
 
+// Whether segment i (0 beam, 1 spatula) is long and its separatrix distance below what a state's
+// digits resolve (separatrix_unresolved_exponent): its length equation, logarithmic in a distance
+// formed by cancellation, then holds for rounding noise rather than for the state.
+template <class T>
+inline bool separatrix_unresolved(const T lengths[2], const T gaps[2], int i) {
+  return lengths[i] >= T(separatrix_long_segment) &&
+         std::fabs(gaps[i]) < std::ldexp(T(1), separatrix_unresolved_exponent);
+}
+
 // The exact state from the limit state z at mu (see the header comment): each limit segment's
 // separatrix distance delta from its length, and z corrected to first order in it. True, with z
 // the exact state, where the correction is certain to tol; turning[]: the limit segments'
@@ -292,6 +302,23 @@ inline bool separatrix_state_exact(const separatrix_system<T, Policy, E1, E2>& l
   return certain && uncertainty <= tol / 4;
 }
 
+// Whether the segments outside `mask` (measured by their own length equations) are resolved at the
+// state z, and those of them in `limit_mask` (limit segments of the march) have turning points
+// within one of expected[].
+template <class T, class Policy, bool E1, bool E2>
+inline bool measured_segments_resolved(const seta_system<T, Policy, E1, E2>& sys, const typename seta_system<T, Policy, E1, E2>::vec& z,
+                                       T mu, int mask, int limit_mask, const int expected[2], const int turning[2]) {
+  T lengths[2], gaps[2];
+  separatrix_measures(sys, z, mu, lengths, gaps);
+  const int bits[2] = {limit_beam, limit_spatula};
+  for (int i = 0; i < 2; ++i) {
+    if (mask & bits[i]) continue;
+    if (separatrix_unresolved(lengths, gaps, i)) return false;
+    if ((limit_mask & bits[i]) && std::abs(turning[i] - expected[i]) > 1) return false;
+  }
+  return true;
+}
+
 // The state at a target mu from the marched limit state z: the limit system with every nonempty
 // subset of the limit segments (largest first: a segment not yet long enough for its limit to be
 // certified is measured by its length equation again, started from the law's estimate). The full
@@ -323,6 +350,12 @@ inline bool separatrix_target_state(const separatrix_system<T, Policy, E1, E2>& 
       if (m == 0) start = zs;
       continue;
     }
+    // A segment this system measures by its own length equation must be resolved by it, and,
+    // where it was a limit segment of the march, keep the followed line's turning points within
+    // one (separatrix_state_exact's rule): else the smaller system has solved that equation for
+    // rounding noise (a spatula 92 elastic lengths long gave Fn right and beta 3.5e-7 off in the
+    // campaign re-run) or taken a path with a loop more.
+    if (!measured_segments_resolved(sys, zs, mu, mask, lim.mask, expected, turning)) continue;
     r = critical_state<T>();
     r.Ft = Ft;
     r.status = critical_status::converged;
