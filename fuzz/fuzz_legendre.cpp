@@ -11,7 +11,7 @@
 //      header decides from a rounded sin phi and accepts Delta^2 >= -4 eps. NaN in -> NaN out,
 //      no throw; nan_policy NaN exactly where default_policy throws, identical bits elsewhere;
 //   3. accuracy against the long double evaluation of the same template:
-//        m <= 1: 8 eps relative (the tests assert 4 eps (F) and 8 eps (E) against mpmath; the
+//        m <= 1: 8 eps relative (the tests assert 3 eps (F) and 4 eps (E) against mpmath; the
 //                exact double phi is exact in long double too, and every term is positive);
 //        m > 1:  F and E increase with phi and the header's result is documented as the exact
 //                value at a phi within a few ulps (gecko/elliptic/ellint_f.hpp, conditioning

@@ -27,7 +27,7 @@
 //   every product formed as a ratio (carlson_rj_pv, carlson_rj_pv_rc_term).
 //   The three terms have mixed signs and the principal value passes through zero, so its
 //   relative error is that of the terms times the cancellation factor sum|terms| / |sum|
-//   (tests: within 8 eps times that factor, which reaches 370 in the table, i.e. up to 223
+//   (tests: within 4 eps times that factor, which reaches 370 in the table, i.e. up to 223
 //   ulps of the result there; p > 0 stays within a few ulps). Next to a zero of the sum the factor
 //   has no bound, and the result may carry no digit: rj_pv_cancellation_beyond_max in
 //   tests/data/fuzz_regressions.csv has factor 8.9e15 and value -1.2e460 and comes back 0, which
