@@ -4,10 +4,17 @@ The solver follows a line that stalls next to a segment's separatrix on in the s
 (gecko/seta/detail/separatrix_limit.hpp, docs/theory/two_level_seta.md "Long segments"). Those
 states lie tens to hundreds of elastic lengths deep, where a shot in double precision amplifies
 its start's rounding past any use (validation/verify.py is inconclusive there), so a seeded sample
-of them is solved again by the arbitrary-precision quadrature route of
-tests/data/seta_separatrix_mp.py (length equations by tanh-sinh quadrature, each long segment's
+of them is checked in arbitrary precision by two routes of tests/data/seta_separatrix_mp.py.
+First the bracketing shot (`bracket_route`): the backward Taylor shot of seta_taylor.py, at a
+precision that covers its amplification, on both sides of gecko's Fn (1e-11 relative); a sign
+change of the base angle's residual proves a root between, which is bisected and decides the
+state where it has gecko's turning points and base rate (beta compared to 1e-11). Else the
+quadrature route (`quad_route`: length equations by tanh-sinh quadrature, each long segment's
 unknown replaced by the logarithm of its separatrix distance), started from gecko's state (which
-picks the branch) and compared:
+picks the branch) and compared. The quadrature route assumes a path class (a long segment with
+turning points librates, one without rotates) and can converge to another path's root: for
+design 8038 at Ft = 1091.36 it converged 0.3 % away, on a path with 3 beam turning points, where
+the bracketing shot confirms gecko's state (0 turning points) to 1.6e-13.
 
     PYTHONPATH=<gecko> python3 -m validation.separatrix validation/rerun_10000.npz --sample 24 --seed 0 \\
         --json validation/results/separatrix_sample.json
@@ -57,13 +64,12 @@ def check(job):
     rp, rq = float(line.theta_rate_joint[j]), float(line.theta_rate_base[j])
     turns = (int(line.turning_points_beam[j]), int(line.turning_points_spatula[j]))
     N = math.hypot(Fn, Ft)
-    L1, L2 = d["l1"] * math.sqrt(N / d["EI1"]), d["l2"] * math.sqrt(N / d["EI2"])
+    L1, L2 = ssm.saddle_lengths(d, N)
     out = dict(design=int(i), Ft=Ft, status=int(line.status[j]), Fn=Fn, beta=beta, turning=list(turns),
                elastic_lengths=[round(L1, 1), round(L2, 1)], min_z=float(line.min_z[j]))
     if out["status"] not in (0, 7):
         out["verdict"] = "not_solved_now"
         return out
-    mp.dps = int(40 + (L1 + L2) / 2)
     t = time.time()
     # A state the route cannot settle within the time limit is undecided, not waited on (at
     # hundreds of digits its Newton can take hours where the quadrature does not converge).
@@ -71,6 +77,21 @@ def check(job):
         signal.signal(signal.SIGALRM, _alarm)
         signal.alarm(max(1, int(limit)))
     try:
+        # First the bracketing shot: conclusive where it finds the state's own root.
+        b = ssm.bracket_route(d, Ft, Fn, L1 + L2)
+        if b is not None:
+            out["shot_root"] = dict(dFn_rel=float(abs(b["Fn"] - Fn) / max(1, abs(Fn))),
+                                    dbeta=float(abs(b["beta"] - beta)), q=float(b["q"]), turning=list(b["turns"]))
+            same_path = (tuple(b["turns"]) == turns and abs(float(b["q"]) - rq) <= 1e-8 * max(1.0, abs(rq)))
+            if same_path:
+                out["route"] = "shot bracket"
+                out["dFn_rel"] = out["shot_root"]["dFn_rel"]
+                out["dbeta"] = out["shot_root"]["dbeta"]
+                out["seconds"] = round(time.time() - t, 1)
+                out["verdict"] = "correct" if out["dbeta"] <= 1e-11 else "wrong"
+                return out
+        out["route"] = "quadrature"
+        mp.dps = int(40 + (L1 + L2) / 2)
         # A long segment with turning points librates (they lie at the saddle); without, it
         # rotates past the saddle.
         r = ssm.quad_route(d, Ft, Fn, beta, 1 if rp > 0 else -1, 1 if rq > 0 else -1, turns,

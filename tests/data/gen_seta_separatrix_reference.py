@@ -5,6 +5,8 @@ segment's separatrix (docs/theory/two_level_seta.md, "Long segments"; gecko/seta
 Regenerate (from the repository root, with the package importable; about 15 min on one core):
 
     PYTHONPATH=python python3 tests/data/gen_seta_separatrix_reference.py   # writes seta_separatrix_reference.csv
+    PYTHONPATH=python python3 tests/data/gen_seta_separatrix_reference.py --only design_8038
+                                               # recomputes that case's rows, keeps the others
 
 Each case is a design of the 10,000-design stress campaign (validation/data/stress_10000_states.npz,
 whose line the solver gives up next to a separatrix) or of tests/seta/stress_regressions.cpp, at
@@ -14,10 +16,16 @@ state on their own in arbitrary precision: "quad" for every row, and "shoot" as 
 segments together are at most 40 elastic lengths long (beyond, the shots amplify the start's
 error past their linear range). A row is written only where the routes converge and agree with
 each other to 1e-20; the file holds the references, not gecko's values (the C++ test compares).
+Cases marked "bracket" take the bracketing shot instead (seta_separatrix_mp.bracket_route: a sign
+change of the backward shot's residual on both sides of gecko's Fn, bisected to well below 1e-25), written
+only where its root has gecko's turning points and base rate: design 8038's beam ends next to its
+saddle, where the quad route's assumed path class found another path's root.
 
 Columns: case, the design (EI1 ... w, repr), Ft (repr), Fn and theta_joint (25 digits), the routes,
-the beam's and the spatula's elastic lengths l sqrt(N/EI) at the state.
+the beam's and the spatula's elastic lengths at the state, l sqrt(N (1 + N/EA) / EI) (in the
+saddle's time constant, as the solver counts them).
 """
+import argparse
 import csv
 import math
 import os
@@ -45,14 +53,45 @@ CASES = [
                       EA2=60395409.89601219, l1=1.0, l2=0.22048726230309484, alpha1=1.209227157850754,
                       alpha2=0.2526114036724534, w=1.0),
      [10979.497208126613]),
+    # campaign design 8038 (EA1 = 13.2): the beam at 100 to 110 times EA1, 5 lengths sqrt(EI1/N)
+    # but 51 and 56 of its saddle's time constant, ends next to its saddle with no turning point;
+    # solved once the solver counted lengths in that time constant (the campaign's two last Ft)
+    ("design_8038", dict(EI1=51.64284421592708, EI2=1418.8611105558543, EA1=13.201065462389026,
+                         EA2=596731.1231598184, l1=1.0, l2=0.002092828007026851, alpha1=0.4479891778773195,
+                         alpha2=0.7243847721473664, w=1.0),
+     [983.2112791861705, 1091.3645198966492], "bracket"),
 ]
 AGREE = 1e-20
 
 
-def main():
+def bracket_row(name, d, Ft, Fn, beta, q, turns, L1, L2):
+    """The row of a "bracket" case, or None where the bracketing shot does not confirm the branch."""
+    t = time.time()
+    b = ssm.bracket_route(d, Ft, Fn, L1 + L2)
+    if b is None or tuple(b["turns"]) != turns or abs(float(b["q"]) - q) > 1e-8 * max(1, abs(q)):
+        print(f"{name} Ft={Ft}: the bracketing shot found no root on gecko's branch, skipped", flush=True)
+        return None
+    print(f"{name} Ft={Ft}: shot bracket, lengths {L1:.1f} {L2:.1f}, gecko dFn "
+          f"{abs(float(b['Fn']) - Fn) / max(1, abs(Fn)):.2e} dbeta {abs(float(b['beta']) - beta):.2e} "
+          f"({time.time() - t:.0f} s)", flush=True)
+    return [name] + [repr(d[k]) for k in KEYS] + [repr(Ft), mp.nstr(b["Fn"], 25), mp.nstr(b["beta"], 25),
+                                                   "shot bracket", f"{L1:.1f}", f"{L2:.1f}"]
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--only", action="append", default=None,
+                    help="recompute only this case's rows (repeatable); the file's other rows are kept")
+    args = ap.parse_args(argv)
+    path = os.path.join(HERE, "seta_separatrix_reference.csv")
     rows = []
+    if args.only:
+        with open(path, newline="") as f:
+            rows = [r for r in list(csv.reader(f))[1:] if r[0] not in args.only]
     t0 = time.time()
-    for name, d, fts in CASES:
+    for name, d, fts, *how in CASES:
+        if args.only and name not in args.only:
+            continue
         line = gecko.TwoLevelSeta(**d).critical_line(Ft=fts, errors="nan")
         for k, Ft in enumerate(fts):
             if int(line.status[k]) not in (0, 7):
@@ -62,7 +101,12 @@ def main():
             p, q = float(line.theta_rate_joint[k]), float(line.theta_rate_base[k])
             turns = (int(line.turning_points_beam[k]), int(line.turning_points_spatula[k]))
             N = math.hypot(Fn, Ft)
-            L1, L2 = d["l1"] * math.sqrt(N / d["EI1"]), d["l2"] * math.sqrt(N / d["EI2"])
+            L1, L2 = ssm.saddle_lengths(d, N)
+            if how == ["bracket"]:
+                row = bracket_row(name, d, Ft, Fn, beta, q, turns, L1, L2)
+                if row is not None:
+                    rows.append(row)
+                continue
             mp.dps = int(40 + (L1 + L2) / 2)
             t = time.time()
             r = ssm.quad_route(d, Ft, Fn, beta, 1 if p > 0 else -1, 1 if q > 0 else -1, turns,
@@ -86,7 +130,9 @@ def main():
                   f"({time.time() - t:.0f} s)", flush=True)
             rows.append([name] + [repr(d[k]) for k in KEYS] +
                         [repr(Ft), mp.nstr(Fn_ref, 25), mp.nstr(beta_ref, 25), route, f"{L1:.1f}", f"{L2:.1f}"])
-    with open(os.path.join(HERE, "seta_separatrix_reference.csv"), "w", newline="") as f:
+    order = [c[0] for c in CASES]
+    rows.sort(key=lambda r: order.index(r[0]) if r[0] in order else len(order))  # stable: Ft order kept
+    with open(path, "w", newline="") as f:
         w = csv.writer(f, lineterminator="\n")
         w.writerow(["case"] + KEYS + ["Ft", "Fn", "theta_joint", "route", "elastic_beam", "elastic_spatula"])
         w.writerows(rows)

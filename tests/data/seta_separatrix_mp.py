@@ -2,7 +2,7 @@
 nothing with the C++ solver (docs/theory/two_level_seta.md, "Long segments").
 
 A segment many elastic lengths long passes the saddle of its first integral at the distance
-delta = R(1) = M - N - c N^2/2 ~ exp(-l sqrt(N/EI)); its state is fixed by delta to all digits, so a
+delta = R(1) = M - N - c N^2/2 ~ exp(-l sqrt(N (1 + c N)/EI)); its state is fixed by delta to all digits, so a
 solver in (Fn, beta) must carry delta's digits in Fn or beta. Both routes here do.
 
   * "quad": the length equations of seta_quad.py (tanh-sinh quadrature of dtheta/|theta'| split at
@@ -15,6 +15,15 @@ solver in (Fn, beta) must carry delta's digits in Fn or beta. Both routes here d
     edge and the beam forward from the base with the state's theta1'(0), matched at the joint
     (theta1 + alpha2 = theta2, EI1 theta1' = EI2 theta2') by Newton in (Fn, theta1'(0)). The shots
     amplify an error by exp(elastic lengths), so only states up to about 40 of them in all.
+  * "bracket": seta_taylor.py's backward shot alone, from the contact edge to the base, at a
+    precision that covers its amplification: its residual g(Fn) = theta1(0) - alpha1 at fixed Ft
+    is continuous in Fn, so a sign change on both sides of the state's Fn proves a root between;
+    bisected, the root's beta, base rate and turning points are compared with the state's. No
+    first integral and no path class is assumed (the quad route assumes one: a long segment with
+    turning points librates, one without rotates, and it can converge to another path's root).
+
+Elastic lengths are counted in the saddle's time constant, l sqrt(N (1 + N/EA) / EI)
+(saddle_lengths): delta ~ exp(-that), and a shot amplifies by about as much.
 
 The start (Fn, beta, the rates' signs, the turning points) is the state to be checked: it picks the
 branch; the value is the routes' own. Used by gen_seta_separatrix_reference.py.
@@ -190,3 +199,49 @@ def shoot_route(d, Ft, Fn0, q0, bits=224):
             if abs(dx[0]) < tol * max(1, abs(x[0])) and abs(dx[1]) < tol * max(1, abs(x[1])):
                 return x[0], residual(*x)[1]
     return None
+
+
+def saddle_lengths(d, N):
+    """Each segment's length in units of its saddle's time constant, l sqrt(N (1 + N/EA) / EI)
+    (gecko/seta/detail/separatrix_limit.hpp, separatrix_measures): delta ~ exp(-that), and a shot
+    through the segment amplifies its start's error by about as much."""
+    def one(l, EI, EA):
+        c = 0.0 if math.isinf(EA) else 1.0 / EA
+        return l * math.sqrt(N * (1 + c * N) / EI)
+    return one(d["l1"], d["EI1"], d["EA1"]), one(d["l2"], d["EI2"], d["EA2"])
+
+
+def bracket_route(d, Ft, Fn, length, span_rel=1e-11, halvings=None):
+    """The root of the backward shot's residual g(Fn) = theta1(0) - alpha1 at fixed Ft between
+    Fn -+ span_rel max(1, |Fn|), where g changes sign there (g is continuous in Fn, so a root lies
+    between), bisected `halvings` times: dict(Fn, beta, q = theta1'(0), turns = (beam, spatula)),
+    in mp. None where g has one sign at both ends (the route decides nothing). `length`: both
+    segments in saddle time constants (saddle_lengths); the precision covers the shot's
+    amplification, about e^length = 2^(1.44 length), with 100 bits to spare. The shot's path (its
+    turning points, its base rate) is that of the root only within about e^-length of it, so the
+    default bisects 40 + 1.5 length times."""
+    bits = 128 + int(1.5 * length)
+    if halvings is None:
+        halvings = 40 + int(1.5 * length)
+    I = st.Integrator(prec=bits, tol_bits=bits - 20)
+    dm = st.mp_design(d)
+    with mp.workprec(I.mprec):
+        def g(x, track=False):
+            r = st.shoot_back(dm, x, Ft, I, track=track)
+            return r["theta10"] - dm["alpha1"], r
+
+        span = mpf(span_rel) * max(1, abs(Fn))
+        lo, hi = mpf(Fn) - span, mpf(Fn) + span
+        glo, ghi = g(lo)[0], g(hi)[0]
+        if glo != 0 and ghi != 0 and (glo > 0) == (ghi > 0):
+            return None
+        for _ in range(halvings):
+            mid = (lo + hi) / 2
+            gm = g(mid)[0]
+            if (gm > 0) == (glo > 0):
+                lo, glo = mid, gm
+            else:
+                hi = mid
+        mid = (lo + hi) / 2
+        r = g(mid, track=True)[1]
+        return dict(Fn=mid, beta=r["beta"], q=r["theta1p0"], turns=(r["turn1"], r["turn2"]))

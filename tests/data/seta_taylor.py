@@ -24,11 +24,19 @@ Shooting:
 Turning points (sign changes of theta' strictly inside a segment) are counted by sampling the
 derivative polynomial of every step at 16 interior points (plus the step ends).
 """
+import math
+
 from mpmath import mp, mpf, libmp
 
 PREC = 124
 TOL_BITS = 106      # |last scaled coefficients| < 2^-106 ~ 1.2e-32
 ORDER = 40
+
+
+def _scaled(H, r):
+    """int(H * r) for a fixed-point step H and a float factor r; past about 1000 bits H itself does
+    not fit a float, so there the product is taken in integers (same result to 2^-30 of H)."""
+    return int(H * r) if H.bit_length() < 1000 else (H * int(r * (1 << 30))) >> 30
 
 
 class Integrator:
@@ -84,9 +92,14 @@ class Integrator:
         rem = L
         sgn = 1 if L > 0 else -1
         H = sgn * min(abs(h0), abs(L))
-        fP = float(1 << P)
+        # fixed point -> float; past P = 1000 by a shift first (1 << P itself overflows a float)
+        fP = float(1 << P) if P < 1000 else None
+
+        def fl(x):
+            return x / fP if fP is not None else math.ldexp(x >> (P - 64), -64)
+
         if track is not None:
-            track.append((p / fP, th / fP))     # the segment's first point (a joint or an end)
+            track.append((fl(p), fl(th)))     # the segment's first point (a joint or an end)
         while rem != 0:
             if abs(H) > abs(rem):
                 H = rem
@@ -96,11 +109,11 @@ class Integrator:
                 if e <= self.tol:
                     break
                 r = 0.8 * (self.tol / e) ** (1.0 / K)
-                H = int(H * r)
+                H = _scaled(H, r)
             if track is not None:
                 # sign of theta' along the step at 16 interior points and the end
-                hf = H / fP
-                dTf = [x / fP for x in dT]
+                hf = fl(H)
+                dTf = [fl(x) for x in dT]
                 for m in range(1, 17):
                     tau = m / 16.0
                     acc = 0.0
@@ -108,7 +121,7 @@ class Integrator:
                         acc = acc * tau + dTf[kk]
                     # acc = sum k Th_k tau^(k-1) = theta'(tau H) * H
                     val = acc / hf
-                    thf = sum(x * tau ** kk for kk, x in enumerate([y / fP for y in Th[:12]]))
+                    thf = sum(x * tau ** kk for kk, x in enumerate([fl(y) for y in Th[:12]]))
                     track.append((val, thf))
             th = sum(Th)
             p = (sum(dT) << P) // H
@@ -116,7 +129,7 @@ class Integrator:
             C0 = sum(C)
             rem -= H
             grow = min(2.0, 0.9 * (self.tol / max(abs(Th[K - 1]), abs(Th[K]), 1)) ** (1.0 / K))
-            H = int(H * max(grow, 0.5))
+            H = _scaled(H, max(grow, 0.5))
             if H == 0:
                 H = sgn
         return th, p, S0, C0, H

@@ -261,3 +261,28 @@ def test_classify_takes_no_verdict_from_a_root_on_another_branch():
     assert cl["wrong_fn"].tolist() == [[True, False, False]]
     assert cl["other_branch"].tolist() == [[False, True, True]]
     assert cl["inconclusive_fn"].tolist() == [[False, True, True]]
+
+
+def test_bracket_route_proves_a_root_and_refuses_an_injected_error():
+    # The reference design at Ft = 5: the bracketing shot finds gecko's root between Fn -+ 1e-11
+    # (same turning points, base rate and beta), and finds no sign change around an Fn moved by
+    # 1e-9 (relative), where the state would be wrong.
+    pytest.importorskip("mpmath")
+    import math
+    from validation import separatrix  # noqa: F401  (puts tests/data on the path)
+    import seta_separatrix_mp as ssm
+    s = gecko.TwoLevelSeta()
+    d = {k: float(getattr(s, k)) for k in ("EI1", "EI2", "EA1", "EA2", "l1", "l2", "alpha1", "alpha2", "w")}
+    line = s.critical_line(Ft=[5.0])
+    Fn, beta, q = float(line.Fn[0]), float(line.theta_joint[0]), float(line.theta_rate_base[0])
+    assert int(line.status[0]) == 0
+    L = sum(ssm.saddle_lengths(d, math.hypot(Fn, 5.0)))
+    b = ssm.bracket_route(d, 5.0, Fn, L, halvings=12)
+    assert b is not None
+    assert abs(float(b["Fn"]) - Fn) <= 1e-11 * max(1, abs(Fn))
+    assert abs(float(b["beta"]) - beta) <= 1e-11
+    assert abs(float(b["q"]) - q) <= 1e-8 * max(1, abs(q))
+    assert tuple(b["turns"]) == (int(line.turning_points_beam[0]), int(line.turning_points_spatula[0]))
+    assert ssm.bracket_route(d, 5.0, Fn * (1 + 1e-9), L, halvings=2) is None
+    # extensible: the saddle's time constant counts 1 + N/EA
+    assert ssm.saddle_lengths(dict(d, EA1=2.0), 6.0)[0] == pytest.approx(math.sqrt(6.0 * 4.0 / d["EI1"]))

@@ -3,7 +3,8 @@
 // (gecko/seta/admissibility.hpp, walk_past_saddle).
 // Reference values: tests/data/seta_separatrix_reference.csv (mpmath, the quadrature route with
 // the separatrix distances as unknowns and, up to 40 elastic lengths, joint-matching Taylor
-// shooting; gen_seta_separatrix_reference.py).
+// shooting; for design 8038, an extensible beam ending next to its saddle, the bracketing
+// backward shot; gen_seta_separatrix_reference.py).
 #include <catch2/catch.hpp>
 
 #include <algorithm>

@@ -3,9 +3,10 @@
 // admissibility walk past the saddle (admissibility.hpp) and the design derivatives
 // (sensitivities.hpp).
 //
-// docs/theory/two_level_seta.md, "Long segments": a tensioned segment l sqrt(N/EI) elastic lengths
+// docs/theory/two_level_seta.md, "Long segments": a tensioned segment l / tau elastic lengths
 // long passes its saddle at the distance delta = M - N - c N^2/2 (paper 001 eq (8)), which shrinks
-// like exp(-l sqrt(N/EI)); delta is formed from the state by cancellation against |M| + N.
+// like exp(-l / tau), tau = sqrt(EI / (N (1 + c N))) the time constant of its saddle; delta is
+// formed from the state by cancellation against |M| + N.
 #pragma once
 
 namespace gecko {
