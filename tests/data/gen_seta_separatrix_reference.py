@@ -60,6 +60,14 @@ CASES = [
                          EA2=596731.1231598184, l1=1.0, l2=0.002092828007026851, alpha1=0.4479891778773195,
                          alpha2=0.7243847721473664, w=1.0),
      [983.2112791861705, 1091.3645198966492], "bracket"),
+    # campaign design 5688: its line stalls before Ft = 70.71 next to the beam's separatrix (the
+    # beam 12.5 saddle time constants long there), where the beam is not yet deep enough for the
+    # logarithmic law; the state comes from the full system started from the law's estimate (the
+    # campaign's Ft >= 0)
+    ("design_5688", dict(EI1=1.0919394358566248, EI2=1059.5565825146696, EA1=50.04322963938513,
+                         EA2=2504.9055709030563, l1=1.0, l2=0.19186767111458192, alpha1=1.26600942073139,
+                         alpha2=0.020954959876545963, w=1.0),
+     [0.0, 18.62275352217643, 26.90403349944308, 63.702017431655584, 70.70923934913769], "bracket"),
 ]
 AGREE = 1e-20
 

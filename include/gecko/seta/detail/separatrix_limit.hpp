@@ -25,7 +25,9 @@
 // whole number of passages, the turning points are within one of the followed line's (see
 // separatrix_state_exact), the correction's uncertainty is below a quarter of the tolerance, and
 // a segment left to its own length equation resolves its separatrix distance
-// (measured_segments_resolved). Elsewhere the state stays not reached.
+// (measured_segments_resolved). Failing that, smaller limit systems and last the full system are
+// solved from the law's estimate, under measured_segments_resolved (separatrix_target_state).
+// Elsewhere the state stays not reached.
 #pragma once
 
 #include <algorithm>
@@ -330,21 +332,26 @@ inline bool measured_segments_resolved(const seta_system<T, Policy, E1, E2>& sys
 
 // The state at a target mu from the marched limit state z: the limit system with every nonempty
 // subset of the limit segments (largest first: a segment not yet long enough for its limit to be
-// certified is measured by its length equation again, started from the law's estimate). The full
-// system alone is not tried: re-planned next to a separatrix it converged to states 1e-7 to 1e-5
-// off in Fn in the campaign re-run (checked in arbitrary precision), where the line's own
-// continuation had failed. True with r set where a state is certified and its admissibility decided.
+// certified is measured by its length equation again, started from the law's estimate), and last
+// the full system, every segment measured, from that estimate. That last one serves the targets
+// where the law says the segment is not deep enough yet (longer than l at delta_b: the exact
+// |delta| is above 2^-38 of the scale, which its own length equation resolves). Any state with a
+// measured segment is kept only under measured_segments_resolved: without that guard the full
+// system, re-planned next to a separatrix, had converged to states 1e-7 to 1e-5 off in Fn in the
+// campaign re-run (distances below the digits, or a path with loops more). True with r set where
+// a state is certified and its admissibility decided.
 template <class T, class Policy, bool E1, bool E2>
 inline bool separatrix_target_state(const separatrix_system<T, Policy, E1, E2>& lim, const typename seta_system<T, Policy, E1, E2>::vec& z,
                                     T mu, T Ft, T tol, const int expected[2], int iterations, critical_state<T>& r) {
   using vec = typename seta_system<T, Policy, E1, E2>::vec;
   const auto& sys = lim.base;
-  int masks[3] = {lim.mask, 0, 0};
+  int masks[4] = {lim.mask, 0, 0, 0};
   int count = 1;
   if (lim.mask == (limit_beam | limit_spatula)) {
     masks[count++] = limit_spatula;
     masks[count++] = limit_beam;
   }
+  masks[count++] = 0;  // the full system
   vec start = z;  // the limit state corrected to first order in delta where the law gives it
   for (int m = 0; m < count; ++m) {
     const int mask = masks[m];
