@@ -245,3 +245,23 @@ def bracket_route(d, Ft, Fn, length, span_rel=1e-11, halvings=None):
         mid = (lo + hi) / 2
         r = g(mid, track=True)[1]
         return dict(Fn=mid, beta=r["beta"], q=r["theta1p0"], turns=(r["turn1"], r["turn2"]))
+
+
+def bracket_ends(d, Ft, Fn, length, span_rel=1e-11):
+    """The two shots of bracket_route alone, without the bisection (which costs 40 + 1.5 length
+    shots): whether the residual changes sign between Fn -+ span_rel max(1, |Fn|) (then a root
+    lies there, within span_rel of Fn), and beta at both ends (the spatula's shot from the contact
+    edge; if both are within 1e-11 of a state's beta, so is the root's, up to beta's variation
+    over the bracket, which the two ends show). The path at the root (its turning points) is not
+    known this way: a segment that long has paths with loops more or fewer whose Fn and beta agree
+    to O(delta). For segments whose bisection would take too long."""
+    bits = 128 + int(1.5 * length)
+    I = st.Integrator(prec=bits, tol_bits=bits - 20)
+    dm = st.mp_design(d)
+    with mp.workprec(I.mprec):
+        span = mpf(span_rel) * max(1, abs(Fn))
+        ends = [st.shoot_back(dm, mpf(Fn) + s * span, Ft, I) for s in (-1, 1)]
+        g = [r["theta10"] - dm["alpha1"] for r in ends]
+        return dict(sign_change=bool(g[0] == 0 or g[1] == 0 or (g[0] > 0) != (g[1] > 0)),
+                    beta=(ends[0]["beta"], ends[1]["beta"]))
+

@@ -34,9 +34,21 @@ ORDER = 40
 
 
 def _scaled(H, r):
-    """int(H * r) for a fixed-point step H and a float factor r; past about 1000 bits H itself does
-    not fit a float, so there the product is taken in integers (same result to 2^-30 of H)."""
-    return int(H * r) if H.bit_length() < 1000 else (H * int(r * (1 << 30))) >> 30
+    """int(H * r) for a fixed-point step H and a float factor r > 0; past about 1000 bits H itself
+    does not fit a float, so there the product is taken exactly in integers (r's exact ratio)."""
+    if H.bit_length() < 1000:
+        return int(H * r)
+    num, den = r.as_integer_ratio()
+    q = abs(H) * num // den
+    return q if H >= 0 else -q
+
+
+def _root_ratio(tol, e, K):
+    """(tol / e)^(1/K) for fixed-point integers; past about 1000 bits the float quotient would
+    underflow to 0 (and the step with it), so there it goes through logarithms."""
+    if e.bit_length() < 1000:
+        return (tol / e) ** (1.0 / K)
+    return 2.0 ** ((math.log2(tol) - math.log2(e)) / K)
 
 
 class Integrator:
@@ -108,7 +120,7 @@ class Integrator:
                 e = max(abs(Th[K - 1]), abs(Th[K]), 1)
                 if e <= self.tol:
                     break
-                r = 0.8 * (self.tol / e) ** (1.0 / K)
+                r = 0.8 * _root_ratio(self.tol, e, K)
                 H = _scaled(H, r)
             if track is not None:
                 # sign of theta' along the step at 16 interior points and the end
@@ -128,7 +140,7 @@ class Integrator:
             S0 = sum(S)
             C0 = sum(C)
             rem -= H
-            grow = min(2.0, 0.9 * (self.tol / max(abs(Th[K - 1]), abs(Th[K]), 1)) ** (1.0 / K))
+            grow = min(2.0, 0.9 * _root_ratio(self.tol, max(abs(Th[K - 1]), abs(Th[K]), 1), K))
             H = _scaled(H, max(grow, 0.5))
             if H == 0:
                 H = sgn

@@ -284,5 +284,9 @@ def test_bracket_route_proves_a_root_and_refuses_an_injected_error():
     assert abs(float(b["q"]) - q) <= 1e-8 * max(1, abs(q))
     assert tuple(b["turns"]) == (int(line.turning_points_beam[0]), int(line.turning_points_spatula[0]))
     assert ssm.bracket_route(d, 5.0, Fn * (1 + 1e-9), L, halvings=2) is None
+    # the two end shots alone: the sign change and beta at both ends, no bisection
+    e = ssm.bracket_ends(d, 5.0, Fn, L)
+    assert e["sign_change"] and max(abs(float(b) - beta) for b in e["beta"]) <= 1e-11
+    assert not ssm.bracket_ends(d, 5.0, Fn * (1 + 1e-9), L)["sign_change"]
     # extensible: the saddle's time constant counts 1 + N/EA
     assert ssm.saddle_lengths(dict(d, EA1=2.0), 6.0)[0] == pytest.approx(math.sqrt(6.0 * 4.0 / d["EI1"]))
