@@ -211,39 +211,53 @@ def saddle_lengths(d, N):
     return one(d["l1"], d["EI1"], d["EA1"]), one(d["l2"], d["EI2"], d["EA2"])
 
 
+def _bracket(d, Ft, Fn, length, span_rel):
+    """The shot at the precision `length` needs (128 + 1.5 length bits: its amplification, about
+    e^length = 2^(1.44 length), with 100 bits to spare) and the bracket Fn -+ span_rel max(1, |Fn|)
+    with both ends shot: (shoot, lo, hi, end shots). shoot(x, track) returns (g, shot) with
+    g = theta1(0) - alpha1; call it inside mp.workprec(shoot.prec)."""
+    bits = 128 + int(1.5 * length)
+    I = st.Integrator(prec=bits, tol_bits=bits - 20)
+    dm = st.mp_design(d)
+
+    def shoot(x, track=False):
+        r = st.shoot_back(dm, x, Ft, I, track=track)
+        return r["theta10"] - dm["alpha1"], r
+
+    shoot.prec = I.mprec
+    with mp.workprec(I.mprec):
+        span = mpf(span_rel) * max(1, abs(Fn))
+        lo, hi = mpf(Fn) - span, mpf(Fn) + span
+        return shoot, lo, hi, (shoot(lo), shoot(hi))
+
+
+def _sign_change(ga, gb):
+    return ga == 0 or gb == 0 or (ga > 0) != (gb > 0)
+
+
 def bracket_route(d, Ft, Fn, length, span_rel=1e-11, halvings=None):
     """The root of the backward shot's residual g(Fn) = theta1(0) - alpha1 at fixed Ft between
     Fn -+ span_rel max(1, |Fn|), where g changes sign there (g is continuous in Fn, so a root lies
     between), bisected `halvings` times: dict(Fn, beta, q = theta1'(0), turns = (beam, spatula)),
     in mp. None where g has one sign at both ends (the route decides nothing). `length`: both
-    segments in saddle time constants (saddle_lengths); the precision covers the shot's
-    amplification, about e^length = 2^(1.44 length), with 100 bits to spare. The shot's path (its
-    turning points, its base rate) is that of the root only within about e^-length of it, so the
-    default bisects 40 + 1.5 length times."""
-    bits = 128 + int(1.5 * length)
+    segments in saddle time constants (saddle_lengths; the precision follows it, see _bracket).
+    The shot's path (its turning points, its base rate) is that of the root only within about
+    e^-length of it, so the default bisects 40 + 1.5 length times."""
     if halvings is None:
         halvings = 40 + int(1.5 * length)
-    I = st.Integrator(prec=bits, tol_bits=bits - 20)
-    dm = st.mp_design(d)
-    with mp.workprec(I.mprec):
-        def g(x, track=False):
-            r = st.shoot_back(dm, x, Ft, I, track=track)
-            return r["theta10"] - dm["alpha1"], r
-
-        span = mpf(span_rel) * max(1, abs(Fn))
-        lo, hi = mpf(Fn) - span, mpf(Fn) + span
-        glo, ghi = g(lo)[0], g(hi)[0]
-        if glo != 0 and ghi != 0 and (glo > 0) == (ghi > 0):
-            return None
+    shoot, lo, hi, ((glo, _), (ghi, _)) = _bracket(d, Ft, Fn, length, span_rel)
+    if not _sign_change(glo, ghi):
+        return None
+    with mp.workprec(shoot.prec):
         for _ in range(halvings):
             mid = (lo + hi) / 2
-            gm = g(mid)[0]
+            gm = shoot(mid)[0]
             if (gm > 0) == (glo > 0):
                 lo, glo = mid, gm
             else:
                 hi = mid
         mid = (lo + hi) / 2
-        r = g(mid, track=True)[1]
+        r = shoot(mid, track=True)[1]
         return dict(Fn=mid, beta=r["beta"], q=r["theta1p0"], turns=(r["turn1"], r["turn2"]))
 
 
@@ -255,13 +269,5 @@ def bracket_ends(d, Ft, Fn, length, span_rel=1e-11):
     over the bracket, which the two ends show). The path at the root (its turning points) is not
     known this way: a segment that long has paths with loops more or fewer whose Fn and beta agree
     to O(delta). For segments whose bisection would take too long."""
-    bits = 128 + int(1.5 * length)
-    I = st.Integrator(prec=bits, tol_bits=bits - 20)
-    dm = st.mp_design(d)
-    with mp.workprec(I.mprec):
-        span = mpf(span_rel) * max(1, abs(Fn))
-        ends = [st.shoot_back(dm, mpf(Fn) + s * span, Ft, I) for s in (-1, 1)]
-        g = [r["theta10"] - dm["alpha1"] for r in ends]
-        return dict(sign_change=bool(g[0] == 0 or g[1] == 0 or (g[0] > 0) != (g[1] > 0)),
-                    beta=(ends[0]["beta"], ends[1]["beta"]))
-
+    _, _, _, ((glo, rlo), (ghi, rhi)) = _bracket(d, Ft, Fn, length, span_rel)
+    return dict(sign_change=bool(_sign_change(glo, ghi)), beta=(rlo["beta"], rhi["beta"]))
