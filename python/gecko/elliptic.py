@@ -54,14 +54,20 @@ def set_simd_level(level: str) -> str:
     """Vector instruction set of the float64 loops of F, E and R_F (for tests and benchmarks).
 
     At import the best level the CPU offers is chosen, or the one named by the environment
-    variable ``GECKO_SIMD`` (``scalar``, ``sse``, ``avx2``, ``avx512``). Every level gives the
-    same results, bit for bit: the vector loops repeat the scalar kernels' operations without
-    contraction, and their square roots (on AVX-512 half of them computed on the FMA unit) are
-    correctly rounded. Results do not depend on the thread count either.
+    variable ``GECKO_SIMD`` (``scalar``, ``sse``, ``avx2``, ``avx512``, ``avx512-sqrt-unit``).
+    Every level gives the same results, bit for bit: the vector loops repeat the scalar kernels'
+    operations without contraction, and their square roots are correctly rounded. Results do not
+    depend on the thread count either.
+
+    The two AVX-512 levels are two schedules of the same loops: ``avx512`` computes half of its
+    square roots on the FMA unit, which is faster where AVX-512 is native (Intel);
+    ``avx512-sqrt-unit`` keeps them all on the square-root unit, which is faster on AMD's Zen 4
+    (its 512-bit operations run as two 256-bit halves). ``auto`` picks ``avx512-sqrt-unit`` on
+    AMD processors and ``avx512`` elsewhere.
 
     Parameters
     ----------
-    level : {"scalar", "sse", "avx2", "avx512", "auto"}
+    level : {"scalar", "sse", "avx2", "avx512", "avx512-sqrt-unit", "auto"}
         ``scalar`` runs the one-element kernels; ``auto`` the best available level
         (see :func:`simd_levels`).
 
@@ -93,7 +99,7 @@ def simd_level() -> str:
     Returns
     -------
     str
-        One of ``scalar``, ``sse``, ``avx2``, ``avx512``.
+        One of ``scalar``, ``sse``, ``avx2``, ``avx512``, ``avx512-sqrt-unit``.
 
     Examples
     --------
@@ -105,7 +111,8 @@ def simd_level() -> str:
 
 
 def simd_levels() -> list:
-    """The levels :func:`set_simd_level` accepts on this machine, lowest first.
+    """The levels :func:`set_simd_level` accepts on this machine, lowest first (the second
+    AVX-512 schedule last).
 
     Returns
     -------

@@ -24,7 +24,7 @@ namespace gecko {
 namespace bindings {
 namespace simd {
 
-enum level : int { scalar = 0, sse = 1, avx2 = 2, avx512 = 3 };
+enum level : int { scalar = 0, sse = 1, avx2 = 2, avx512 = 3, avx512_sqrt_unit = 4 };
 
 // Scalar kernel of one element: args[0 .. nin) -> result (the ufuncs pass nan_policy kernels).
 using lane_fn = double (*)(const double* args);
@@ -43,6 +43,8 @@ struct kernels {
 const kernels* kernels_sse();
 const kernels* kernels_avx2();
 const kernels* kernels_avx512();
+const kernels* kernels_avx512_sqrt_unit();  // same bits, another schedule (elliptic_simd_avx512.cpp)
+const kernels* kernels_avx512_unit1();       // its one-chain part
 
 }  // namespace simd
 }  // namespace bindings

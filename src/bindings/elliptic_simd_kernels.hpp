@@ -13,12 +13,12 @@
 //   E = s R_F(c^2, Delta^2, 1) - (m/3) s^3 R_D(c^2, Delta^2, 1)        (m <= 0; DLMF 19.25.9)
 //   E = (1-m) s R_F(c^2, Delta^2, 1) + (m(1-m)/3) s^3 R_D(c^2, 1, Delta^2) + m s c/Delta
 //                                                                  (0 < m <= 1; DLMF 19.25.10)
-// with Carlson's duplication (DLMF 19.26.18, 19.26.20) and the degree-15 (R_F) and degree-11
-// (R_D) series of gecko/elliptic/carlson_rf.hpp and carlson_rd.hpp; F's R_F in the scaled product
-// form with the degree-11 series of gecko/elliptic/ellint_f.hpp. Lanes converge after
-// different numbers of duplication steps: the loop runs while any lane is still active, and a
-// converged lane is frozen by a blend, so it ends with exactly its own step count (an extra step
-// would change its last bits and tie its result to its neighbours).
+// with Carlson's duplication (DLMF 19.26.18, 19.26.20) and the series of
+// gecko/elliptic/carlson_rf.hpp and carlson_rd.hpp; F's R_F (gecko/elliptic/ellint_f.hpp) and E's
+// R_F and R_D (gecko/elliptic/legendre_rf_rd.hpp) in the scaled product form from known roots.
+// Lanes converge after different numbers of duplication steps: the loop runs while any lane is
+// still active, and a converged lane is frozen by a blend, so it ends with exactly its own step
+// count (an extra step would change its last bits and tie its result to its neighbours).
 // Domain edges stay with the scalar kernels: m > 1 (double-word Delta^2, gecko/elliptic/
 // edge_delta.hpp), |phi| > pi/2 (angle reduction), NaN, infinities, R_F arguments outside the
 // no-rescaling window; the caller's lane_fn recomputes those lanes.
@@ -193,32 +193,45 @@ inline vd rf_plain(vd x, vd y, vd z) {
   return rf_finish(dx, dy, A, f);
 }
 
-// R_F and R_D from one duplication (carlson_rf_rd_imp).
-inline void rf_rd(vd x, vd y, vd z, vd& rf, vd& rd) {
+// R_F and R_D of the Legendre E from known roots (legendre_rf_rd_imp of
+// gecko/elliptic/legendre_rf_rd.hpp, same operations): every argument below 1/eps.
+inline void legendre_rf_rd(vd x, vd y, vd z, vd rx, vd ry, vd rz, vd& rf, vd& rd) {
   vd AF = (x + y + z) * (1.0 / 3);
   vd AD = (x + y + 3.0 * z) * (1.0 / 5);
-  const vd fx = AF - x, fy = AF - y, fz = AF - z;
-  const vd dx = AD - x, dy = AD - y, dz = AD - z;
-  const vd DF = vmax(vmax(vabs(fx), vabs(fy)), vabs(fz));
-  const vd DD = vmax(vmax(vabs(dx), vabs(dy)), vabs(dz));
-  vd f = splat(1.0);
-  vd sum = splat(0.0);
-  vi active = (f * DD >= tol_rd * AD) | (f * DF >= tol_rf * AF);
-  for (int step = 0; step < max_steps && pack::any(active); ++step) {
-    const vd sx = pack::sqrt(x), sy = pack::sqrt(y), sz = pack::sqrt(z);
-    const vd lambda = sx * (sy + sz) + sy * sz;
-    sum = select(active, sum + f / (sz * (z + lambda)), sum);
-    x = select(active, (x + lambda) * 0.25, x);
-    y = select(active, (y + lambda) * 0.25, y);
-    z = select(active, (z + lambda) * 0.25, z);
-    AF = select(active, (AF + lambda) * 0.25, AF);
-    AD = select(active, (AD + lambda) * 0.25, AD);
-    f = select(active, f * 0.25, f);
-    active &= (f * DD >= tol_rd * AD) | (f * DF >= tol_rf * AF);
+  const vd fx = AF - x, fy = AF - y;
+  const vd dx = AD - x, dy = AD - y;
+  const vd DF = vmax(vmax(vabs(fx), vabs(fy)), vabs(AF - z));
+  const vd DD = vmax(vmax(vabs(dx), vabs(dy)), vabs(AD - z));
+  const vd limF = DF * (1 / tol_rf11);
+  const vd limD = DD * (1 / tol_rd);
+  vd xy = rx + ry, xz = rx + rz, yz = ry + rz;
+  const vd L0 = rx * yz + ry * rz;
+  vd sum = 1.0 / (rz * (z + L0));
+  AF = AF + L0;
+  AD = AD + L0;
+  vd X = xy * xz, Y = xy * yz, Z = xz * yz;
+  vd g = splat(2.0);
+  vi active = (AF <= limF) | (AD <= limD);
+  for (int step = 1; step < max_steps && pack::any(active); ++step) {
+    const vd sx = pack::sqrt(X), sy = pack::sqrt(Y), sz = pack::sqrt(Z);
+    xy = sx + sy;
+    xz = sx + sz;
+    yz = sy + sz;
+    const vd L = sx * yz + sy * sz;
+    sum = select(active, sum + g / (sz * (Z + L)), sum);
+    AF = select(active, AF + L, AF);
+    AD = select(active, AD + L, AD);
+    X = select(active, xy * xz, X);
+    Y = select(active, xy * yz, Y);
+    Z = select(active, xz * yz, Z);
+    g = select(active, g * 2.0, g);
+    active &= (AF <= limF) | (AD <= limD);
   }
-  const vd sD = f / AD;
-  rf = rf_finish(fx, fy, AF, f);
-  rd = rd_series(dx * sD, dy * sD, AD, f) + 3.0 * sum;
+  const vd q = 1.0 / (AF * AD);
+  const vd rA = AD * q, rB = AF * q;
+  const vd w = g / pack::sqrt(AF);
+  rf = w + w * rf_series11_tail(fx * rA, fy * rA);
+  rd = rd_series(dx * rB, dy * rB, AD, g) + 3.0 * sum;
 }
 
 constexpr double pio2_below = 0x1.921fb54442d18p+0;
@@ -269,22 +282,23 @@ struct kernel_e {
     const vd s = l.s, c = l.c;
     const vd c2 = c * c;
     const vd s2 = s * s;
-    // Delta^2 >= 2^500 (m -> -inf) goes to the scalar kernel, whose R_D sum term divides in two
-    // steps there (carlson_rd_sum_term); below it every argument is < 2^503 and every factor of
-    // that term < 2^511, where both kernels take the one-rounding form. Such lanes continue with
-    // m = 1/2 and Delta^2 = 1; the e_pos products of lanes with m <= 0 use m = 1/2 as well
-    // (m (1 - m) would overflow for m < -1e154 and raise the flag, though the lane takes e_neg).
+    // Delta^2 >= 1/eps (m -> -inf) goes to the scalar kernel's unscaled duplication (ellint_e_sc);
+    // such lanes continue with m = 1/2 and Delta^2 = 1. The e_pos products of lanes with m <= 0
+    // use m = 1/2 as well (m (1 - m) would overflow for m < -1e154 and raise the flag, though the
+    // lane takes e_neg).
     const vd d2_in = c2 + (1.0 - l.m) * s2;
-    ok &= d2_in < 0x1p500;
+    ok &= d2_in < 0x1p52;
     const vd m = select(ok, l.m, splat(0.5));
     const vd d2 = select(ok, d2_in, splat(1.0));
+    const vd d = pack::sqrt(d2);
     const vi neg = m <= 0.0;
     const vd mp = select(neg, splat(0.5), m), kp = 1.0 - mp;
     // m <= 0: R(c^2, Delta^2, 1); 0 < m <= 1: R(c^2, 1, Delta^2) (the scalar kernel's orders)
+    const vd one = splat(1.0);
     vd rf, rd;
-    rf_rd(c2, select(neg, d2, splat(1.0)), select(neg, splat(1.0), d2), rf, rd);
+    legendre_rf_rd(c2, select(neg, d2, one), select(neg, one, d2), c, select(neg, d, one), select(neg, one, d), rf, rd);
     const vd e_neg = s * (rf - (m / 3.0) * s2 * rd);
-    const vd e_pos = s * (kp * rf + (mp * kp / 3.0) * s2 * rd + mp * c / pack::sqrt(d2));
+    const vd e_pos = s * (kp * rf + (mp * kp / 3.0) * s2 * rd + mp * c / d);
     return vcopysign(select(neg, e_neg, e_pos), l.phi);
   }
 };

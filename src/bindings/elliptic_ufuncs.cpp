@@ -11,8 +11,8 @@
 // has released the GIL around the inner loop already (no object dtypes), so none is touched here.
 //
 // SIMD: the float64 loops of F, E and R_F run the vector kernels of elliptic_simd.hpp at the level
-// picked once at import (the best the CPU has, or GECKO_SIMD=scalar|sse|avx2|avx512, or
-// set_simd_level); every element's result is independent of its neighbours there as well, so the
+// picked once at import (the best the CPU has, or GECKO_SIMD=scalar|sse|avx2|avx512|
+// avx512-sqrt-unit, or set_simd_level); every element's result is independent of its neighbours there as well, so the
 // bitwise thread independence holds at every level.
 #include "bindings.hpp"
 
@@ -90,8 +90,9 @@ inline void run_range(char** args, const npy_intp* steps, npy_intp begin, npy_in
 }
 
 // ---- SIMD level ------------------------------------------------------------------------------
-constexpr const char* level_names[] = {"scalar", "sse", "avx2", "avx512"};
-const simd::kernels* level_table[4] = {nullptr, nullptr, nullptr, nullptr};
+constexpr int n_levels = 5;
+constexpr const char* level_names[n_levels] = {"scalar", "sse", "avx2", "avx512", "avx512-sqrt-unit"};
+const simd::kernels* level_table[n_levels] = {nullptr, nullptr, nullptr, nullptr, nullptr};
 int best_level = simd::scalar;
 std::atomic<int> active_level{simd::scalar};
 
@@ -100,26 +101,35 @@ void detect_levels() {
   __builtin_cpu_init();
   level_table[simd::sse] = simd::kernels_sse();  // SSE2 is part of x86-64
   if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) level_table[simd::avx2] = simd::kernels_avx2();
-  if (__builtin_cpu_supports("avx512f")) level_table[simd::avx512] = simd::kernels_avx512();
+  if (__builtin_cpu_supports("avx512f")) {
+    level_table[simd::avx512] = simd::kernels_avx512();
+    level_table[simd::avx512_sqrt_unit] = simd::kernels_avx512_sqrt_unit();
+  }
 #endif
   for (int l = simd::avx512; l > simd::scalar; --l)
     if (level_table[l]) {
       best_level = l;
       break;
     }
+#if defined(GECKO_SIMD_X86)
+  // The two AVX-512 schedules give the same bits; which is faster depends on the chip
+  // (elliptic_simd_avx512.cpp): the FMA-unit roots help where AVX-512 is native (Intel), and cost
+  // time on AMD's Zen 4, which splits each 512-bit operation in two.
+  if (level_table[simd::avx512_sqrt_unit] && __builtin_cpu_is("amd")) best_level = simd::avx512_sqrt_unit;
+#endif
 }
 
 // Level by name ("auto": the best); -1 for an unknown name.
 int parse_level(const std::string& name) {
   if (name == "auto") return best_level;
-  for (int l = 0; l < 4; ++l)
+  for (int l = 0; l < n_levels; ++l)
     if (name == level_names[l]) return l;
   return -1;
 }
 
 std::string available_levels() {
   std::string s;
-  for (int l = 0; l < 4; ++l)
+  for (int l = 0; l < n_levels; ++l)
     if (l == simd::scalar || level_table[l]) s += (s.empty() ? "" : ", ") + std::string(level_names[l]);
   return s;
 }
@@ -397,7 +407,7 @@ void bind_elliptic_ufuncs(py::module_& m) {
   m.def("simd_level", [] { return std::string(level_names[active_level.load()]); });
   m.def("simd_levels", [] {
     py::list out;
-    for (int l = 0; l < 4; ++l)
+    for (int l = 0; l < n_levels; ++l)
       if (l == simd::scalar || level_table[l]) out.append(level_names[l]);
     return out;
   });

@@ -155,11 +155,35 @@ def test_bitwise_identical_for_any_thread_count_at_every_level(level, name, narg
         ell.set_num_threads(before)
 
 
+def _cpu_vendor():
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("vendor_id"):
+                    return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return ""
+
+
+def _auto_level():
+    """The level import picks: the highest, except that AVX-512 machines get the schedule of
+    their vendor (avx512-sqrt-unit on AMD, avx512 elsewhere; src/bindings/elliptic_simd_avx512.cpp)."""
+    if "avx512" not in LEVELS:
+        return LEVELS[-1]
+    return "avx512-sqrt-unit" if _cpu_vendor() == "AuthenticAMD" else "avx512"
+
+
+def test_both_avx512_schedules_are_offered_together():
+    assert ("avx512" in LEVELS) == ("avx512-sqrt-unit" in LEVELS)
+    assert LEVELS[0] == "scalar"
+
+
 def test_level_errors_and_environment_variable():
     with pytest.raises(ValueError, match="not available"):
         ell.set_simd_level("avx1024")
     assert ell.set_simd_level("auto") == ell.simd_level()
-    assert ell.simd_level() == LEVELS[-1]
+    assert ell.simd_level() == _auto_level()
     code = "import gecko.elliptic as e; print(e.simd_level())"
     env = dict(os.environ, GECKO_SIMD="scalar")
     out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
@@ -167,7 +191,12 @@ def test_level_errors_and_environment_variable():
     env["GECKO_SIMD"] = "nonsense"
     out = subprocess.run([sys.executable, "-W", "always", "-c", code], env=env, capture_output=True, text=True,
                          check=True)
-    assert out.stdout.strip() == LEVELS[-1] and "GECKO_SIMD=nonsense" in out.stderr
+    assert out.stdout.strip() == _auto_level() and "GECKO_SIMD=nonsense" in out.stderr
+    if "avx512" in LEVELS:
+        for name in ("avx512", "avx512-sqrt-unit"):
+            env["GECKO_SIMD"] = name
+            out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True)
+            assert out.stdout.strip() == name
 
 
 @pytest.mark.parametrize("name", ["ellint_f", "ellint_e", "carlson_rf"])

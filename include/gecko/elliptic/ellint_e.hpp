@@ -39,6 +39,7 @@
 #include "gecko/elliptic/edge_delta.hpp"
 #include "gecko/elliptic/ellint_ek.hpp"
 #include "gecko/elliptic/legendre_domain.hpp"
+#include "gecko/elliptic/legendre_rf_rd.hpp"
 
 namespace gecko {
 namespace detail {
@@ -55,14 +56,20 @@ inline T ellint_e_sc(T s, T c, T m) {
   const T s2 = s * s;
   if (m <= 0) {
     const T d2 = c2 + (1 - m) * s2;
+    if (d2 < 1 / std::numeric_limits<T>::epsilon()) {
+      const auto r = legendre_rf_rd_imp<T, Policy>(c2, d2, T(1), c, sqrt(d2), T(1));
+      return s * (r.rf - (m / 3) * s2 * r.rd);
+    }
+    // m -> -inf: the unscaled duplication, whose arguments cannot overflow
     const auto r = carlson_rf_rd_imp<T, Policy>(c2, d2, T(1));
     return s * (r.rf - (m / 3) * s2 * r.rd);
   }
   if (m <= 1) {
     const T k2 = 1 - m;
-    const T d2 = c2 + k2 * s2;
-    const auto r = carlson_rf_rd_imp<T, Policy>(c2, T(1), d2);
-    return s * (k2 * r.rf + (m * k2 / 3) * s2 * r.rd + m * c / sqrt(d2));
+    const T d2 = c2 + k2 * s2;  // <= 1
+    const T d = sqrt(d2);
+    const auto r = legendre_rf_rd_imp<T, Policy>(c2, T(1), d2, c, T(1), d);
+    return s * (k2 * r.rf + (m * k2 / 3) * s2 * r.rd + m * c / d);
   }
   // m > 1: ellint_e_m_above_one, with Delta^2 from double-word sin and cos.
   return ellint_e_m_above_one<T, Policy>(s, c, fma(-((m - 1) * s), s, c2), m);
