@@ -145,6 +145,49 @@ def test_line_lengths_counts_elastic_lengths_by_status(tmp_path):
     assert r["1"]["max"] == 30.0 and r["1"]["percent_above"]["30"] == 0.0
 
 
+def test_status1_designs_sorts_the_designs_by_their_scales():
+    # FIELDS order: EI1, EI2, EA1, EA2, l1, l2, alpha1, alpha2, w
+    from validation import status1_designs as sd
+    P = np.array([
+        [0.1, 100.0, np.inf, np.inf, 1.0, 0.01, 0.5, 0.5, 1.0],   # sqrt(200)/(2 pi 0.1) = 22.5 turns
+        [1.0, 1e-4, np.inf, np.inf, 1.0, 0.5, 0.5, 0.5, 1.0],     # 0.0023 turns; l2 sqrt(2e4) = 70.7
+        [1.0, 1.0, 2.0, np.inf, 1.0, 0.1, 0.5, 0.5, 1.0],         # 0.23 turns, 0.14 lengths, strain 0.5
+        [1.0, 1.0, 1e3, 1e3, 1.0, 0.1, 0.5, 0.5, 1.0],            # nothing extreme
+    ])
+    turns, lengths, strain = sd.design_scales(P)
+    assert turns[0] == pytest.approx(np.sqrt(200) / (2 * np.pi * 0.1))
+    assert lengths[1] == pytest.approx(0.5 * np.sqrt(2e4)) and strain[2] == 0.5 and strain[0] == 0
+    assert list(sd.classify(P)) == [0, 1, 2, 3]
+    status = np.array([[1, 1, 1], [1, 1, 1], [0, 1, 6], [0, 7, 3]], dtype=np.int8)
+    r = sd.summary(P, status)
+    assert r["status1_states"] == 7 and r["status1_states_in_designs_without_natural_state"] == 6
+    assert r["classes_without_natural_state"] == {"coiled beam": 1, "long spatula": 1, "extensible": 0, "other": 0}
+    assert r["classes_with_a_solved_state"] == {"coiled beam": 0, "long spatula": 0, "extensible": 1, "other": 1}
+    top = r["by_beam_turns"][-1]
+    assert top["beam_turns"] == [10.0, None] and top["designs"] == 1 and top["without_natural_state"] == 1
+
+
+def test_status1_designs_scan_samples_both_halves_and_tallies_the_verdicts(monkeypatch):
+    from validation import claims
+    from validation import status1_designs as sd
+    P = np.array([[0.1, 100.0, np.inf, np.inf, 1.0, 0.01, 0.5, 0.5, 1.0]] * 3
+                 + [[1.0, 1e-4, np.inf, np.inf, 1.0, 0.5, 0.5, 0.5, 1.0]] * 3 + [[1.0] * 9])
+    status = np.array([[1, 1]] * 6 + [[0, 0]], dtype=np.int8)
+    seen = []
+
+    def fake_scan(p, ft):  # a root inside the forms for the coiled designs, none for the others
+        seen.append((float(p[0]), ft))
+        coiled = p[0] == 0.1
+        return {"roots": [{"Fn": -1.0, "beta": 0.5, "in_forms": True}] if coiled else [], "jumps": [],
+                "unresolved": [], "unreliable_nodes": 0}
+
+    monkeypatch.setattr(claims, "scan_state", fake_scan)
+    r = sd.scan_sample(P, status, 4, seed=0)
+    assert len(r["designs"]) == 4 and all(ft == 0.0 for _, ft in seen)
+    assert all(d["design"] < 6 for d in r["designs"])  # the solved design is never drawn
+    assert r["verdicts"] == {"coiled beam": {"root_in_forms": 2}, "long spatula": {"no_root": 2}}
+
+
 def test_hermite_minimum_is_exact_for_a_cubic():
     from validation import verify
     # z(t) = (t - 0.3)^2 (t + 1) - 0.05 on [0, 1]: minimum at t = 0.3 (z = -0.05), inside the step
