@@ -16,13 +16,15 @@ designs hold nearly all status-1 states. For each design (w, l1 as given), with 
 M = sqrt(2 w EI2), the moment the spatula carries at an inextensible contact edge without load
 (curvature jump sqrt(2 w / EI2), the left side of paper 001 eq 3 at Fn = Ft = 0):
   beam_turns      M l1 / (2 pi EI1): full turns of the beam under that moment alone. Forces at the
-                  joint can cancel part of it along the beam, but where it is many turns the
-                  natural state coils the beam (and is then inadmissible, status 7, if it exists).
+                  joint cancel part of it along the beam; where it is many turns they must be
+                  large, and the beam becomes many elastic lengths l1 sqrt(|Fn| / EI1) long
+                  (validation/README.md, "Where the status-1 give-ups come from").
   spatula_lengths l2 sqrt(2 w / EI2): the spatula's length in its peel boundary-layer lengths; a long
                   spatula is a segment next to its separatrix (docs "Long segments").
   strain_scale    max(w / EA1, w / EA2): the axial strain a peel force of order w gives; near 1 the
                   forms' edge (an axial load comparable to EA, paper 001 eq 15) is close.
-Each design falls in the first class it meets: coiled beam (beam_turns > 1), long spatula
+Each design falls in the first class it meets (the names say which scale is large, not what the
+state looks like): coiled beam (beam_turns > 1), long spatula
 (spatula_lengths > 20), extensible (strain_scale > 0.1), else other. The same classes are counted
 over the designs with at least one state solved (status 0 or 7), for comparison, and both are
 counted by beam_turns (bins 0-1, 1-3, 3-10, over 10).

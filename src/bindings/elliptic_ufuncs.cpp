@@ -12,8 +12,8 @@
 //
 // SIMD: the float64 loops of F, E and R_F run the vector kernels of elliptic_simd.hpp at the level
 // picked once at import (the best the CPU has, or GECKO_SIMD=scalar|sse|avx2|avx512|
-// avx512-sqrt-unit, or set_simd_level); every element's result is independent of its neighbours there as well, so the
-// bitwise thread independence holds at every level.
+// avx512-sqrt-unit, or set_simd_level); every element's result is independent of its neighbours
+// there as well, so the bitwise thread independence holds at every level.
 #include "bindings.hpp"
 
 #define NPY_NO_DEPRECATED_API NPY_1_7_API_VERSION
