@@ -9,7 +9,8 @@ go that it does not reach?
 --scan N also scans N of the designs without a natural state (half coiled beam, half the other
 classes, drawn with --seed) at Ft = 0 with the independent shooting scan of validation/claims.py
 (no gecko code): does a critical state exist there at all, and inside the model's forms? About 20 s
-a design with roots.
+a design with roots. Its "no root" is not a proof next to a separatrix, where the residual can
+change sign within a gap of its Fn grid (validation/README.md).
 
 A design whose natural state at Ft = 0 is not found gives status 1 at every requested Ft; those
 designs hold nearly all status-1 states. For each design (w, l1 as given), with the peel moment

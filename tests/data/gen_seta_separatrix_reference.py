@@ -68,6 +68,18 @@ CASES = [
                          EA2=2504.9055709030563, l1=1.0, l2=0.19186767111458192, alpha1=1.26600942073139,
                          alpha2=0.020954959876545963, w=1.0),
      [0.0, 18.62275352217643, 26.90403349944308, 63.702017431655584, 70.70923934913769], "bracket"),
+    # campaign designs 4533 and 7821: no natural state by the homotopy alone (every path stalls
+    # with the beam next to its separatrix, beta within 1e-3 of pi/2); the natural state past that
+    # stall on the separatrix limit followed in lambda (gecko/seta/detail/natural_state.hpp). 7821
+    # is one of the designs the Fn scan of validation/claims.py had found without a root at Ft = 0.
+    ("natural_4533", dict(EI1=0.5520388505895616, EI2=319.6123765558719, EA1=19.620994288817034,
+                          EA2=432770.30098404747, l1=1.0, l2=0.0019325934497122748, alpha1=1.0332181001624257,
+                          alpha2=0.15799372909846707, w=1.0),
+     [0.0], "bracket"),
+    ("natural_7821", dict(EI1=0.17974480488164182, EI2=37.517065355427604, EA1=99320206.7627823, EA2=INF,
+                          l1=1.0, l2=0.0014686552569921631, alpha1=1.4768479628067168, alpha2=0.03127759152129335,
+                          w=1.0),
+     [0.0], "bracket"),
 ]
 AGREE = 1e-20
 

@@ -27,7 +27,7 @@
 #include "gecko/seta/detail/line_output.hpp"
 #include "gecko/seta/detail/line_trace.hpp"
 #include "gecko/seta/detail/natural_state.hpp"
-#include "gecko/seta/detail/separatrix_limit.hpp"
+#include "gecko/seta/detail/separatrix_extend.hpp"
 #include "gecko/seta/detail/seta_system.hpp"
 #include "gecko/seta/extensibility.hpp"
 #include "gecko/seta/solve_critical.hpp"

@@ -10,6 +10,9 @@
 // (deficit and w scaled at different rates). Any converged end is polished at lambda = 1 by Newton
 // with the exact Jacobian at the state tolerance, with the plan checked at the solution
 // (solve_with_plans), so it is a root of the design's own equations whatever path led there.
+// Last, where the first path stalled because a segment lies on its separatrix to double precision
+// (a beam tens of saddle time constants long), the separatrix limit system is followed in lambda
+// from that stall (natural_state_on_separatrix below).
 #pragma once
 
 #include <algorithm>
@@ -20,6 +23,7 @@
 
 #include "gecko/seta/detail/continuation.hpp"
 #include "gecko/seta/detail/homotopy_system.hpp"
+#include "gecko/seta/detail/separatrix_limit.hpp"
 #include "gecko/seta/solve_critical.hpp"
 
 namespace gecko {
@@ -61,11 +65,21 @@ inline critical_status natural_state_around_folds(const System& sys, const homot
   return critical_status::converged;
 }
 
+// Where a path's monotone steps stalled: the last state solved, at lambda, with its plan.
+template <class System>
+struct homotopy_stall {
+  bool valid = false;
+  typename System::vec z;
+  typename System::value_type lambda = 0;
+  typename System::plan_type plan;
+};
+
 // One homotopy path: monotone steps in lambda, then (where they stall) the arclength follower.
+// stall, where given, records where the monotone steps stalled.
 template <class System>
 inline critical_status natural_state_on_path(const System& sys, const homotopy_path<typename System::value_type>& path,
                                              typename System::vec& z, typename System::plan_type& plan,
-                                             int& iterations) {
+                                             int& iterations, homotopy_stall<System>* stall = nullptr) {
   using T = typename System::value_type;
   T lam = T(0.02);
   bool started = false;
@@ -110,6 +124,12 @@ inline critical_status natural_state_on_path(const System& sys, const homotopy_p
       last = st;
       dl *= T(0.5);
       if (dl < T(1e-5)) {
+        if (stall) {
+          stall->valid = true;
+          stall->z = z;
+          stall->lambda = lam;
+          stall->plan = plan;
+        }
         const critical_status around =
             natural_state_around_folds(sys, path, z_start, lam_start, plan_start, z, plan, iterations);
         // A path that ran into the edge of the model's forms, in the monotone steps or along the
@@ -121,6 +141,88 @@ inline critical_status natural_state_on_path(const System& sys, const homotopy_p
     }
   }
   return critical_status::converged;
+}
+
+// The natural state past a path's stall next to a separatrix (the generic System: none).
+template <class System>
+inline bool natural_state_on_separatrix(const System&, const homotopy_path<typename System::value_type>&,
+                                        const homotopy_stall<System>&, typename System::vec&,
+                                        typename System::plan_type&, int&) {
+  return false;
+}
+
+// The seta: where the monotone steps stalled with a segment many saddle time constants long on its
+// separatrix (separatrix_measures, separatrix_mask: the stall of a followed critical line, met on
+// the way to the natural state; validation/README.md, "Where the status-1 give-ups come from"),
+// the separatrix limit system (detail/separatrix_limit.hpp) is followed in lambda to the design,
+// as extend_on_separatrix follows it in Ft, and its state at lambda = 1, Ft = 0 is corrected to
+// the exact one and certified by separatrix_target_state (the turning points within one of the
+// stall's). Kept only where the design's own plan at that state gives the same turning points.
+template <class T, class Policy, bool E1, bool E2>
+inline bool natural_state_on_separatrix(const seta_system<T, Policy, E1, E2>& sys, const homotopy_path<T>& path,
+                                        const homotopy_stall<seta_system<T, Policy, E1, E2>>& stall,
+                                        typename seta_system<T, Policy, E1, E2>::vec& z, seta_plan& plan,
+                                        int& iterations) {
+  using std::fabs;
+  using Sys = seta_system<T, Policy, E1, E2>;
+  using Lim = separatrix_system<T, Policy, E1, E2>;
+  using vec = typename Sys::vec;
+  if (!stall.valid) return false;
+  const T tol = T(1e-12);
+  T lengths[2], gaps[2];
+  int expected[2];
+  int mask;
+  vec zc = stall.z;
+  {
+    const Sys hs = path.at(sys, stall.lambda);
+    separatrix_measures(hs, zc, T(0), lengths, gaps);
+    mask = separatrix_mask(lengths, gaps);
+    if (!mask) return false;
+    hs.turning_points(stall.plan, zc, T(0), expected[0], expected[1]);
+    const Lim lim{hs, mask};
+    seta_plan p = lim.plan(zc, T(0));
+    if (!solve_separatrix(lim, zc, T(0), p, tol, iterations)) return false;
+  }
+  // March in lambda: secant predictor, the step grown after a success and halved after a failure;
+  // the state grows about like lambda (eq 18), so a step may move it by about its relative share.
+  T lam = stall.lambda, lam_prev = stall.lambda, h = T(0.01);
+  vec z_prev = zc;
+  for (int step = 0; step < 4000 && lam < 1; ++step) {
+    const T lt = lam + h < 1 ? lam + h : T(1);
+    vec zt = zc;
+    if (lam != lam_prev) zt += (zc - z_prev) * ((lt - lam) / (lam - lam_prev));
+    const Sys ht = path.at(sys, lt);
+    const Lim lim{ht, mask};
+    seta_plan pt = lim.plan(zt, T(0));
+    int its = 0;
+    const bool ok = solve_separatrix(lim, zt, T(0), pt, tol, its) &&
+                    lim.step_norm(zt - zc, zc) <= T(0.5) + 4 * (lt - lam) / lam;
+    iterations += its;
+    if (!ok) {
+      h /= 2;
+      if (h < T(1e-9)) return false;
+      continue;
+    }
+    z_prev = zc;
+    lam_prev = lam;
+    zc = zt;
+    lam = lt;
+    h = std::min(h * T(1.5), T(0.08));
+    // a segment that has come next to its separatrix on the way joins the limit ones
+    separatrix_measures(ht, zc, T(0), lengths, gaps);
+    mask |= separatrix_mask(lengths, gaps);
+  }
+  if (lam < 1) return false;
+  critical_state<T> r;
+  vec zs;
+  if (!separatrix_target_state(Lim{sys, mask}, zc, T(0), T(0), tol, expected, iterations, r, &zs)) return false;
+  seta_plan full = plan_at_solution(sys, zs, T(0));
+  int tb, ts;
+  sys.turning_points(full, zs, T(0), tb, ts);
+  if (tb != r.turning_points_beam || ts != r.turning_points_spatula) return false;
+  z = zs;
+  plan = full;
+  return true;
 }
 
 // The natural state at Ft = 0 by homotopy (see the header comment).
@@ -136,11 +238,14 @@ inline critical_status natural_state(const System& sys, typename System::vec& z,
   // first path missed; the reverse order, w last, found almost none).
   const homotopy_path<T> paths[] = {{1, 1}, {4, 1}, {2, 1}};
   critical_status first = critical_status::not_converged;
+  homotopy_stall<System> stall;
   for (int k = 0; k < 3; ++k) {
-    const critical_status st = natural_state_on_path(sys, paths[k], z, plan, iterations);
+    const critical_status st = natural_state_on_path(sys, paths[k], z, plan, iterations, k == 0 ? &stall : nullptr);
     if (st == critical_status::converged) return st;
     if (k == 0) first = st;
   }
+  // Last, past the first path's stall on the separatrix limit (the seta only).
+  if (natural_state_on_separatrix(sys, paths[0], stall, z, plan, iterations)) return critical_status::converged;
   return first;
 }
 

@@ -1,0 +1,106 @@
+// gecko/seta/detail/separatrix_extend.hpp — a followed critical line continued past its stall on
+// the separatrix limit system (gecko/seta/detail/separatrix_limit.hpp), target by target.
+// Apart from separatrix_limit.hpp so that the natural-state homotopy (detail/natural_state.hpp),
+// which the line trace calls, can use the limit system without an include cycle.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+#include "gecko/seta/detail/line_trace.hpp"
+#include "gecko/seta/detail/separatrix_limit.hpp"
+
+namespace gecko {
+namespace detail {
+
+// States at the requested targets (indices `which` into Ft/out, status not_reached) beyond the end
+// of a line that stalled or whose corrector failed next to a separatrix: the limit system followed
+// in mu from the line's last node, each target's state accepted where separatrix_state_exact holds.
+template <class T, class Policy, bool E1, bool E2>
+inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
+                                 const traced_line<seta_system<T, Policy, E1, E2>>& line, T scale, const T* Ft,
+                                 std::size_t count, const std::size_t* which, T tol, critical_state<T>* out) {
+  using std::fabs;
+  using vec = typename seta_system<T, Policy, E1, E2>::vec;
+  if (!(line.end == line_end::stalled || line.end == line_end::no_convergence) || line.nodes.size() < 2) return;
+  const auto& last = line.nodes.back();
+  const T mu0 = last.Ft;
+  // The line must stop at the far end of what it covered (else the targets beyond were passed by
+  // another part of it, and the first crossing is not the limit's).
+  T lo = mu0, hi = mu0;
+  for (const auto& nd : line.nodes) {
+    lo = std::min(lo, nd.Ft);
+    hi = std::max(hi, nd.Ft);
+  }
+  const T dir = mu0 == hi ? T(1) : (mu0 == lo ? T(-1) : T(0));
+  if (dir == 0) return;
+  std::vector<std::pair<T, std::size_t>> targets;
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::size_t i = which[k];
+    if (out[i].status != critical_status::not_reached) continue;
+    const T mu = line_parameter(sys, Ft[i]);
+    if ((mu - mu0) * dir > 0) targets.push_back({(mu - mu0) * dir, i});
+  }
+  if (targets.empty()) return;
+  std::sort(targets.begin(), targets.end());
+  T lengths[2], gaps[2];
+  separatrix_measures(sys, last.z, mu0, lengths, gaps);
+  int mask = separatrix_mask(lengths, gaps);
+  if (!mask) return;
+  int expected[2];
+  sys.turning_points(line.plans.back(), last.z, mu0, expected[0], expected[1]);
+  separatrix_system<T, Policy, E1, E2> lim{sys, mask};
+  vec z = last.z;
+  seta_plan plan = lim.plan(z, mu0);
+  int its = 0;
+  if (!solve_separatrix(lim, z, mu0, plan, tol, its)) return;
+  // March in mu: secant predictor, the step grown after a success and halved after a failure.
+  T mu = mu0, h = T(0.01) * scale;
+  vec z_prev = z;
+  T mu_prev = mu0;
+  const T h_min = T(1e-9) * scale, h_max = T(0.08) * scale;
+  std::size_t next = 0;
+  for (int step = 0; step < 4000 && next < targets.size(); ++step) {
+    const T goal = mu0 + dir * targets[next].first;
+    const T mu_try = fabs(goal - mu) <= h ? goal : mu + dir * h;
+    if (fabs(mu_try) > sys.mu_limit()) break;
+    vec zt = z;
+    if (mu != mu_prev) zt += (z - z_prev) * ((mu_try - mu) / (mu - mu_prev));
+    seta_plan pt = plan;
+    int it = 0;
+    const bool ok = solve_separatrix(lim, zt, mu_try, pt, tol, it) &&
+                    lim.step_norm(zt - z, z) <= T(0.5) + 4 * fabs(mu_try - mu) / scale;
+    its += it;
+    if (!ok) {
+      h /= 2;
+      if (h < h_min) break;
+      continue;
+    }
+    z_prev = z;
+    mu_prev = mu;
+    z = zt;
+    mu = mu_try;
+    plan = pt;
+    h = std::min(h * T(1.5), h_max);
+    // A segment that has come next to its separatrix on the way joins the limit ones.
+    separatrix_measures(sys, z, mu, lengths, gaps);
+    const int grown = mask | separatrix_mask(lengths, gaps);
+    if (grown != mask) {
+      mask = lim.mask = grown;
+      plan = lim.plan(z, mu);
+      if (!solve_separatrix(lim, z, mu, plan, tol, its)) break;
+    }
+    while (next < targets.size() && mu == mu0 + dir * targets[next].first) {
+      const std::size_t i = targets[next].second;
+      critical_state<T> r;
+      if (separatrix_target_state(lim, z, mu, Ft[i], tol, expected, its, r)) out[i] = r;
+      ++next;
+    }
+  }
+}
+
+}  // namespace detail
+}  // namespace gecko
