@@ -56,12 +56,10 @@ inline T ellint_e_sc(T s, T c, T m) {
   const T s2 = s * s;
   if (m <= 0) {
     const T d2 = c2 + (1 - m) * s2;
-    if (d2 < 1 / std::numeric_limits<T>::epsilon()) {
-      const auto r = legendre_rf_rd_imp<T, Policy>(c2, d2, T(1), c, sqrt(d2), T(1));
-      return s * (r.rf - (m / 3) * s2 * r.rd);
-    }
-    // m -> -inf: the unscaled duplication, whose arguments cannot overflow
-    const auto r = carlson_rf_rd_imp<T, Policy>(c2, d2, T(1));
+    // m -> -inf (Delta^2 >= 1/eps): the unscaled duplication, whose arguments cannot overflow
+    const auto r = d2 < 1 / std::numeric_limits<T>::epsilon()
+                       ? legendre_rf_rd_imp<T, Policy>(c2, d2, T(1), c, sqrt(d2), T(1))
+                       : carlson_rf_rd_imp<T, Policy>(c2, d2, T(1));
     return s * (r.rf - (m / 3) * s2 * r.rd);
   }
   if (m <= 1) {
