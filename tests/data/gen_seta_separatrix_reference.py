@@ -80,6 +80,12 @@ CASES = [
                           l1=1.0, l2=0.0014686552569921631, alpha1=1.4768479628067168, alpha2=0.03127759152129335,
                           w=1.0),
      [0.0], "bracket"),
+    # campaign design 3664: the natural state's beam is 43 elastic lengths long, on its
+    # separatrix, and the followed line fails at its first step; the state is marched to from there
+    ("single_3664", dict(EI1=0.29057066956441524, EI2=63.62438201208349, EA1=6.08428269541901,
+                         EA2=37.36091311154138, l1=1.0, l2=0.0010364878387884408, alpha1=0.07932555321778109,
+                         alpha2=0.4805687627432984, w=1.0),
+     [8.635534569003983], "bracket"),
 ]
 AGREE = 1e-20
 

@@ -27,13 +27,14 @@ using gecko_test::read_csv_table;
 // Ft = 145 with the spatula 23 and the beam 17 elastic lengths long, both next to their separatrices.
 // Its parameters are read from the reference table's rows of that case (one source with the
 // generator).
-gecko::TwoLevelSeta<double> design_27() {
+gecko::TwoLevelSeta<double> reference_design(const std::string& name) {
   const auto t = read_csv_table(std::string(GECKO_TEST_DATA_DIR) + "/seta_separatrix_reference.csv");
   for (const auto& r : t.rows)
-    if (r[t.col("case")] == "design_27") return design_of(t, r);
-  FAIL("no design_27 rows in seta_separatrix_reference.csv");
+    if (r[t.col("case")] == name) return design_of(t, r);
+  FAIL("no " << name << " rows in seta_separatrix_reference.csv");
   return {};
 }
+gecko::TwoLevelSeta<double> design_27() { return reference_design("design_27"); }
 
 }  // namespace
 
@@ -83,6 +84,26 @@ TEST_CASE("the followed line stalls where the recovered states begin", "[seta][s
     CHECK(st.status == gecko::critical_status::converged);
     CHECK(st.turning_points_beam == 1);
     CHECK(st.turning_points_spatula == 1);
+  }
+}
+
+TEST_CASE("a line that never leaves its natural state is marched from it", "[seta][separatrix]") {
+  // Campaign design 3664: the natural state's beam is 43 elastic lengths long, on its separatrix,
+  // and the continuation fails at its first step. Before the march started from such a one-node
+  // line, every Ft > 0 of this design was status 6; the state itself is checked against its
+  // reference by the first test case (single_3664).
+  const auto s = reference_design("single_3664");
+  const auto line = gecko::critical_line(s, [] {
+    gecko::critical_line_options<double> o;
+    o.ft_end = 8;  // (Ft)max = sqrt(2 EA2 w) = 8.64
+    return o;
+  }());
+  CHECK(line.end == gecko::line_end::no_convergence);
+  CHECK(line.points.size() == 1);
+  const auto got = gecko::critical_line_at(s, std::vector<double>{2.0, 8.635534569003983});
+  for (const auto& st : got) {
+    INFO("Ft " << st.Ft << " status " << static_cast<int>(st.status));
+    CHECK((st.status == gecko::critical_status::converged || st.status == gecko::critical_status::inadmissible));
   }
 }
 

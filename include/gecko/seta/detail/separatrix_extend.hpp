@@ -19,13 +19,15 @@ namespace detail {
 // States at the requested targets (indices `which` into Ft/out, status not_reached) beyond the end
 // of a line that stalled or whose corrector failed next to a separatrix: the limit system followed
 // in mu from the line's last node, each target's state accepted where separatrix_state_exact holds.
+// A line whose corrector failed at its first step (a natural state found on the separatrix,
+// detail/natural_state.hpp) is marched from that state, towards its targets.
 template <class T, class Policy, bool E1, bool E2>
 inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
                                  const traced_line<seta_system<T, Policy, E1, E2>>& line, T scale, const T* Ft,
                                  std::size_t count, const std::size_t* which, T tol, critical_state<T>* out) {
   using std::fabs;
   using vec = typename seta_system<T, Policy, E1, E2>::vec;
-  if (!(line.end == line_end::stalled || line.end == line_end::no_convergence) || line.nodes.size() < 2) return;
+  if (!(line.end == line_end::stalled || line.end == line_end::no_convergence) || line.nodes.empty()) return;
   const auto& last = line.nodes.back();
   const T mu0 = last.Ft;
   // The line must stop at the far end of what it covered (else the targets beyond were passed by
@@ -35,7 +37,18 @@ inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
     lo = std::min(lo, nd.Ft);
     hi = std::max(hi, nd.Ft);
   }
-  const T dir = mu0 == hi ? T(1) : (mu0 == lo ? T(-1) : T(0));
+  T dir = mu0 == hi ? T(1) : (mu0 == lo ? T(-1) : T(0));
+  if (line.nodes.size() == 1) {
+    // Never left its start: the direction is the targets' (one run of critical_line_at_imp
+    // holds the targets of one sign of Ft).
+    dir = 0;
+    for (std::size_t k = 0; k < count && dir == 0; ++k) {
+      const std::size_t i = which[k];
+      if (out[i].status != critical_status::not_reached) continue;
+      const T mu = line_parameter(sys, Ft[i]);
+      dir = mu > mu0 ? T(1) : (mu < mu0 ? T(-1) : T(0));
+    }
+  }
   if (dir == 0) return;
   std::vector<std::pair<T, std::size_t>> targets;
   for (std::size_t k = 0; k < count; ++k) {
