@@ -23,10 +23,7 @@ using gecko_test::design_of;
 using gecko_test::parse;
 using gecko_test::read_csv_table;
 
-// Campaign design 27 (validation/data/stress_10000_states.npz): its followed line stalls at
-// Ft = 145 with the spatula 23 and the beam 17 elastic lengths long, both next to their separatrices.
-// Its parameters are read from the reference table's rows of that case (one source with the
-// generator).
+// A design of the reference table, read from the rows of its case (one source with the generator).
 gecko::TwoLevelSeta<double> reference_design(const std::string& name) {
   const auto t = read_csv_table(std::string(GECKO_TEST_DATA_DIR) + "/seta_separatrix_reference.csv");
   for (const auto& r : t.rows)
@@ -34,6 +31,8 @@ gecko::TwoLevelSeta<double> reference_design(const std::string& name) {
   FAIL("no " << name << " rows in seta_separatrix_reference.csv");
   return {};
 }
+// Campaign design 27 (validation/data/stress_10000_states.npz): its followed line stalls at
+// Ft = 145 with the spatula 23 and the beam 17 elastic lengths long, both next to their separatrices.
 gecko::TwoLevelSeta<double> design_27() { return reference_design("design_27"); }
 
 }  // namespace
