@@ -56,6 +56,7 @@ struct traced_line {
   std::vector<T> folds;  // Ft at the folds (dFt/ds = 0), linearly located between nodes
   line_end end = line_end::reached_ft_end;
   T omega = 0;           // largest affine Lipschitz estimate 2 theta / ||dx|| seen by the corrector
+  int direction = 1;     // the direction in mu it was followed in (+1: increasing Ft)
 };
 
 // The line parameter mu is the System's (Ft, or tau with Ft = (Ft)max sin(tau/(Ft)max)).
@@ -188,6 +189,7 @@ inline traced_line<System> follow_line(const System& sys, const typename System:
   constexpr int n = System::n;
   using xvec = Eigen::Matrix<T, n + 1, 1>;
   traced_line<System> line;
+  line.direction = dir;
   xvec t_prev = xvec::Zero();
   t_prev[n] = T(dir);
   xvec t;

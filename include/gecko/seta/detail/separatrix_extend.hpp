@@ -37,18 +37,8 @@ inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
     lo = std::min(lo, nd.Ft);
     hi = std::max(hi, nd.Ft);
   }
-  T dir = mu0 == hi ? T(1) : (mu0 == lo ? T(-1) : T(0));
-  if (line.nodes.size() == 1) {
-    // Never left its start: the direction is the targets' (one run of critical_line_at_imp
-    // holds the targets of one sign of Ft).
-    dir = 0;
-    for (std::size_t k = 0; k < count && dir == 0; ++k) {
-      const std::size_t i = which[k];
-      if (out[i].status != critical_status::not_reached) continue;
-      const T mu = line_parameter(sys, Ft[i]);
-      dir = mu > mu0 ? T(1) : (mu < mu0 ? T(-1) : T(0));
-    }
-  }
+  // A line that never left its start goes the way it was followed.
+  const T dir = line.nodes.size() == 1 ? T(line.direction) : (mu0 == hi ? T(1) : (mu0 == lo ? T(-1) : T(0)));
   if (dir == 0) return;
   std::vector<std::pair<T, std::size_t>> targets;
   for (std::size_t k = 0; k < count; ++k) {
