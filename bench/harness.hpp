@@ -7,8 +7,14 @@
 // (one state loop per benchmark, reported by its own reporter) would still need this array loop
 // inside each benchmark and a second pass to join the errors; it adds no statistic we lack here.
 // What it would give — robust repetition statistics — is done below: each case sweeps the whole
-// array (20000 independent inputs, so branch predictors cannot learn one point) enough passes
-// to last >= target_ms, repeated `reps` times, and the median is reported. The repetitions of
+// array enough passes to last >= target_ms, repeated `reps` times, and the median is reported.
+// Every pass visits the array in a new order (visit_order below): a branch predictor learns the
+// data-dependent branches of a sequence of inputs it has seen before, and a kernel whose branch
+// pattern follows its inputs (the duplication step count of gecko::ellint_f) was timed too fast.
+// Measured on the 2-core EPYC (`profile_ellint_f --learning`, bench/results/
+// profile_ellint_f_learning.md): gecko::ellint_f on the uniform set took 32.3 ns in the first pass
+// and 25.6 ns in passes 321-640 when every pass repeated the array's order, and 32.3-33.1 ns
+// throughout with a new order per pass; Boost's ellint_1 took 59-64 ns either way. The repetitions of
 // all cases are interleaved (rep 1 of every case, then rep 2, ...) with a rotating start, so a
 // noisy interval on this shared machine hits all methods alike instead of one method's block.
 //
@@ -27,6 +33,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -59,11 +66,56 @@ inline double wall_seconds() {
 }
 inline double wall_ns() { return 1e9 * wall_seconds(); }
 
-// One timed thing: a function that evaluates a kernel over the whole input array into `out`.
-// Results go to memory that is read afterwards (errors, checksum), so the compiler cannot drop
-// the evaluations; the kernel itself is inlined into the loop (a function pointer is followed
-// once per pass, not per evaluation).
-using sweep_fn = void (*)(const void* inputs, double* out);
+// The order in which one pass visits the n inputs: i_k = (start + k stride) mod n, with stride
+// coprime to n (every input exactly once). The harness draws a new start and stride for every pass,
+// so no pass repeats the sequence of the one before and a branch predictor cannot learn it.
+// out[i] stays the result of input i, whatever the order.
+struct visit_order {
+  std::size_t start = 0, stride = 1;
+
+  template <class F>
+  void for_each(std::size_t n, F&& f) const {
+    std::size_t i = start;
+    for (std::size_t k = 0; k < n; ++k) {
+      f(i);
+      const std::size_t j = i + stride;
+      i = j >= n ? j - n : j;  // a conditional move, not a branch (start, stride < n)
+    }
+  }
+};
+
+inline std::size_t gcd_of(std::size_t a, std::size_t b) {
+  while (b != 0) {
+    const std::size_t t = a % b;
+    a = b;
+    b = t;
+  }
+  return a;
+}
+
+// A pseudo-random order of n inputs from a 64-bit state (splitmix64), deterministic for a seed.
+inline visit_order next_visit_order(std::size_t n, std::uint64_t& state) {
+  auto next = [&] {
+    std::uint64_t z = (state += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  };
+  visit_order o;
+  if (n <= 1) return visit_order{0, 0};
+  o.start = static_cast<std::size_t>(next() % n);
+  // strides away from 1 and n - 1, which would keep neighbours together
+  const std::size_t lo = n >= 16 ? n / 8 : 1, span = n >= 16 ? n - 2 * lo : n - 1;
+  o.stride = lo + static_cast<std::size_t>(next() % span);
+  while (gcd_of(o.stride, n) != 1) o.stride = o.stride + 1 < n ? o.stride + 1 : 1;
+  return o;
+}
+
+// One timed thing: a function that evaluates a kernel over the whole input array into `out`, in
+// the given order (visit_order::for_each). Results go to memory that is read afterwards (errors,
+// checksum), so the compiler cannot drop the evaluations; the kernel itself is inlined into the
+// loop (a function pointer is followed once per pass, not per evaluation).
+using sweep_fn = void (*)(const void* inputs, double* out, const visit_order& order);
 
 struct timing {
   double median_ns = 0, q1_ns = 0, q3_ns = 0, min_ns = 0;  // per evaluation
@@ -148,9 +200,13 @@ struct timed_case {
 // caller, which is what finally keeps every evaluation observable).
 inline double time_cases(std::vector<timed_case>& cases, int reps, double target_ms) {
   auto now_ns = [] { return thread_cpu_ns(); };
+  std::uint64_t order_state = 0x5EEDull;  // fixed seed: a rerun visits in the same orders
+  std::vector<visit_order> orders;
   auto run = [&](timed_case& c) {
+    orders.resize(c.passes);  // drawn before the clock starts
+    for (auto& o : orders) o = next_visit_order(c.n, order_state);
     const double t0 = now_ns();
-    for (std::size_t p = 0; p < c.passes; ++p) c.sweep(c.inputs, c.out.data());
+    for (std::size_t p = 0; p < c.passes; ++p) c.sweep(c.inputs, c.out.data(), orders[p]);
     return now_ns() - t0;
   };
   for (auto& c : cases) {  // warm-up (page in, caches, lazy init) and calibration

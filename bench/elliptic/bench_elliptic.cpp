@@ -145,19 +145,17 @@ template <class K>
 struct takes_kc<K, std::void_t<decltype(K::takes_complementary_modulus)>> : std::true_type {};
 
 template <class Kernel>
-void sweep_legendre(const void* p, double* out) {
+void sweep_legendre(const void* p, double* out, const visit_order& order) {
   const auto& s = *static_cast<const legendre_set*>(p);
   const double* a = s.phi.data();
   const double* b = takes_kc<Kernel>::value ? s.kc.data() : Kernel::takes_modulus ? s.k.data() : s.m.data();
-  const std::size_t n = s.phi.size();
-  for (std::size_t i = 0; i < n; ++i) out[i] = Kernel::eval(a[i], b[i]);
+  order.for_each(s.phi.size(), [&](std::size_t i) { out[i] = Kernel::eval(a[i], b[i]); });
 }
 template <class Kernel>
-void sweep_rf(const void* p, double* out) {
+void sweep_rf(const void* p, double* out, const visit_order& order) {
   const auto& s = *static_cast<const rf_set*>(p);
   const double *x = s.x.data(), *y = s.y.data(), *z = s.z.data();
-  const std::size_t n = s.x.size();
-  for (std::size_t i = 0; i < n; ++i) out[i] = Kernel::eval(x[i], y[i], z[i]);
+  order.for_each(s.x.size(), [&](std::size_t i) { out[i] = Kernel::eval(x[i], y[i], z[i]); });
 }
 
 // ---- the table ------------------------------------------------------------------------------

@@ -23,7 +23,12 @@
 // sets (bench/elliptic/data, mpmath references). Timing: bench/harness.hpp (thread CPU time,
 // medians of interleaved repetitions): compare ratios within one run.
 //
-// Usage: profile_ellint_f [--data DIR] [--reps N] [--target-ms MS]   (markdown table on stdout)
+// With --learning it prints instead what repeating one visiting order does (why bench/harness.hpp
+// draws a new order for every pass): gecko::ellint_f and Boost timed over growing blocks of passes,
+// first with the array's own order in every pass, then with a new order per pass.
+//
+// Usage: profile_ellint_f [--data DIR] [--reps N] [--target-ms MS] [--learning]
+//        (markdown table on stdout)
 #include <gecko/elliptic.hpp>
 
 #include <boost/math/special_functions/ellint_1.hpp>
@@ -186,11 +191,48 @@ struct input_set {
   std::vector<double> phi, m, k, hi, lo;
 };
 template <class K, bool Modulus = false>
-void sweep(const void* p, double* out) {
+void sweep(const void* p, double* out, const visit_order& order) {
   const auto& s = *static_cast<const input_set*>(p);
+  const double* a = s.phi.data();
   const double* b = Modulus ? s.k.data() : s.m.data();
-  const std::size_t n = s.phi.size();
-  for (std::size_t i = 0; i < n; ++i) out[i] = K::eval(s.phi[i], b[i]);
+  order.for_each(s.phi.size(), [&](std::size_t i) { out[i] = K::eval(a[i], b[i]); });
+}
+
+// Time per evaluation over consecutive blocks of passes (1, 1, 1, 2, 5, ..., 320 passes: 640 in
+// all), one row per kernel and ordering. A kernel whose branches follow its inputs gets faster
+// block after block when every pass repeats the same order (the predictor learns the sequence).
+void print_learning(const std::vector<input_set>& sets) {
+  const int blocks[] = {1, 1, 1, 2, 5, 10, 20, 40, 80, 160, 320};
+  std::printf("# Branch-predictor learning across repeated passes (profile_ellint_f --learning)\n\n"
+              "ns per evaluation in consecutive blocks of passes over the same 20000 inputs; load average "
+              "at start %s; flags %s.\n\n| input set | kernel | order |",
+              load_average().c_str(), GECKO_BENCH_CXX_FLAGS);
+  int done = 0;
+  for (int b : blocks) {
+    std::printf(" passes %d-%d |", done + 1, done + b);
+    done += b;
+  }
+  std::printf("\n|---|---|---|");
+  for (std::size_t k = 0; k < sizeof blocks / sizeof blocks[0]; ++k) std::printf("---|");
+  std::printf("\n");
+  std::uint64_t state = 0x5EEDull;
+  for (const auto& s : sets) {
+    std::vector<double> out(s.phi.size());
+    for (const auto& [name, fn] : {std::pair<const char*, sweep_fn>{"gecko::ellint_f", sweep<gecko_f>},
+                                   {"boost::math::ellint_1", sweep<boost_f, true>}}) {
+      for (const bool fresh : {false, true}) {
+        std::printf("| %s | %s | %s |", s.name.c_str(), name, fresh ? "new every pass" : "the same every pass");
+        for (int b : blocks) {
+          std::vector<visit_order> orders(static_cast<std::size_t>(b));
+          for (auto& o : orders) o = fresh ? next_visit_order(s.phi.size(), state) : visit_order{0, 1};
+          const double t0 = thread_cpu_ns();
+          for (const auto& o : orders) fn(&s, out.data(), o);
+          std::printf(" %.1f |", (thread_cpu_ns() - t0) / (static_cast<double>(b) * static_cast<double>(s.phi.size())));
+        }
+        std::printf("\n");
+      }
+    }
+  }
 }
 
 struct method {
@@ -203,13 +245,15 @@ int run(int argc, char** argv) {
   std::string data_dir = GECKO_BENCH_DATA_DIR;
   int reps = 21;
   double target_ms = 30;
+  bool learning = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--data" && i + 1 < argc) data_dir = argv[++i];
+    if (a == "--learning") learning = true;
+    else if (a == "--data" && i + 1 < argc) data_dir = argv[++i];
     else if (a == "--reps" && i + 1 < argc) reps = std::stoi(argv[++i]);
     else if (a == "--target-ms" && i + 1 < argc) target_ms = std::stod(argv[++i]);
     else {
-      std::cerr << "usage: " << argv[0] << " [--data DIR] [--reps N] [--target-ms MS]\n";
+      std::cerr << "usage: " << argv[0] << " [--data DIR] [--reps N] [--target-ms MS] [--learning]\n";
       return 2;
     }
   }
@@ -226,6 +270,10 @@ int run(int argc, char** argv) {
       s.k.push_back(std::sqrt(s.m[i]));
     }
     sets.push_back(std::move(s));
+  }
+  if (learning) {
+    print_learning(sets);
+    return 0;
   }
   // The copy must be the kernel: bitwise, on every input of both sets.
   for (const auto& s : sets) {

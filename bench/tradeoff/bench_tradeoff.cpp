@@ -128,15 +128,13 @@ template <gsl_mode_t Mode> struct gsl_rd {
 template <gsl_mode_t Mode> struct gsl_rj {
   static double eval(double x, double y, double z, double p) { return gsl_sf_ellint_RJ(x, y, z, p, Mode); }
 };
-template <class K> void sweep3(const void* s, double* out) {
+template <class K> void sweep3(const void* s, double* out, const visit_order& order) {
   const auto& c = *static_cast<const carlson_set*>(s);
-  const std::size_t n = c.x.size();
-  for (std::size_t i = 0; i < n; ++i) out[i] = K::eval(c.x[i], c.y[i], c.z[i]);
+  order.for_each(c.x.size(), [&](std::size_t i) { out[i] = K::eval(c.x[i], c.y[i], c.z[i]); });
 }
-template <class K> void sweep4(const void* s, double* out) {
+template <class K> void sweep4(const void* s, double* out, const visit_order& order) {
   const auto& c = *static_cast<const carlson_set*>(s);
-  const std::size_t n = c.x.size();
-  for (std::size_t i = 0; i < n; ++i) out[i] = K::eval(c.x[i], c.y[i], c.z[i], c.p[i]);
+  order.for_each(c.x.size(), [&](std::size_t i) { out[i] = K::eval(c.x[i], c.y[i], c.z[i], c.p[i]); });
 }
 
 // ---- one elastica segment ------------------------------------------------------------------------
@@ -241,16 +239,15 @@ template <int Setting> struct boost_segment {
     return p.scale * total;
   }
 };
-template <class K> void sweep_segment(const void* s, double* out) {
+template <class K> void sweep_segment(const void* s, double* out, const visit_order& order) {
   const auto& set = *static_cast<const segment_set*>(s);
-  const std::size_t n = set.c.size();
-  for (std::size_t i = 0; i < n; ++i) {
+  order.for_each(set.c.size(), [&](std::size_t i) {
     try {
       out[i] = K::eval(set.c[i]);
     } catch (const std::exception&) {  // Boost's quadrature throws where the integrand blows up
       out[i] = std::numeric_limits<double>::quiet_NaN();
     }
-  }
+  });
 }
 
 // ---- solve_critical at one Ft ------------------------------------------------------------------
@@ -326,31 +323,31 @@ double gsl_solve(const seta_case& k, double tol) {
 template <bool E1, bool E2>
 using system_t = gecko::detail::seta_system<double, gecko::policies::default_policy, E1, E2>;
 
-void sweep_gsl_solve(const void* p, double* out) {
+void sweep_gsl_solve(const void* p, double* out, const visit_order& order) {
   const auto& set = *static_cast<const seta_set*>(p);
-  for (std::size_t i = 0; i < set.c.size(); ++i) {
+  order.for_each(set.c.size(), [&](std::size_t i) {
     const auto& k = set.c[i];
     const bool e1 = !std::isinf(k.s.EA1), e2 = !std::isinf(k.s.EA2);
     out[i] = e1 ? (e2 ? gsl_solve<system_t<true, true>>(k, set.tol) : gsl_solve<system_t<true, false>>(k, set.tol))
                 : (e2 ? gsl_solve<system_t<false, true>>(k, set.tol) : gsl_solve<system_t<false, false>>(k, set.tol));
-  }
+  });
 }
-void sweep_gecko_solve(const void* p, double* out) {
+void sweep_gecko_solve(const void* p, double* out, const visit_order& order) {
   const auto& set = *static_cast<const seta_set*>(p);
   gecko::solve_options<double> opt;
   opt.tolerance = set.tol;
-  for (std::size_t i = 0; i < set.c.size(); ++i) {
+  order.for_each(set.c.size(), [&](std::size_t i) {
     const auto& k = set.c[i];
     const auto r = gecko::solve_critical(k.s, k.Ft, k.guess, opt);
     out[i] = r.status == gecko::critical_status::converged ? r.Fn : std::nan("");
-  }
+  });
 }
-void sweep_gecko_solve_noguess(const void* p, double* out) {
+void sweep_gecko_solve_noguess(const void* p, double* out, const visit_order& order) {
   const auto& set = *static_cast<const seta_set*>(p);
-  for (std::size_t i = 0; i < set.c.size(); ++i) {
+  order.for_each(set.c.size(), [&](std::size_t i) {
     const auto r = gecko::solve_critical(set.c[i].s, set.c[i].Ft);
     out[i] = r.status == gecko::critical_status::converged ? r.Fn : std::nan("");
-  }
+  });
 }
 
 seta_set load_seta_states(const std::string& path, double perturbation) {

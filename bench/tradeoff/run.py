@@ -93,6 +93,19 @@ def rel_err_eps(got, hi, lo):
     return float(e.max()), float(np.sqrt(np.mean(e * e))), int((~ok).sum())
 
 
+def shuffled_order(n, n_target, seed=0):
+    """Indices of n inputs repeated up to n_target elements, each repetition in its own random order.
+
+    A branch predictor learns the data-dependent branches of a sequence of inputs it has seen
+    before: a plain np.tile of the 20000-element sets, or the same array timed call after call,
+    times a kernel whose branches follow its inputs (gecko's F) too fast (bench/harness.hpp, the C++
+    side of the same fix; `profile_ellint_f --learning` shows the effect)."""
+    import numpy as np
+    rng = np.random.default_rng(seed)
+    k = -(-n_target // n)
+    return np.concatenate([rng.permutation(n) for _ in range(k)])[:n_target]
+
+
 def order_rows(rows):
     """Families in FAMILY_ORDER, then input sets in order of first appearance, then run order."""
     sets = {}
@@ -345,15 +358,19 @@ def time_python_kernels(quick, gecko_mod):
         methods = [(f"scipy.special.{sfn.__name__}", "numpy array", sfn)]
         if gecko_mod is not None:
             methods.append((f"gecko.{gname} (Python)", "numpy array", getattr(gecko_mod, gname)))
+        # Timed calls cycle through differently shuffled copies of the set (see shuffled_order).
+        n_copies = 4 if quick else 16
+        copies = [[a[idx] for a in args] for idx in shuffled_order(len(hi), n_copies * len(hi)).reshape(n_copies, -1)]
         for method, setting, fn in methods:
             got = fn(*args)
             mx, rms, bad = rel_err_eps(got, hi, lo)
-            med, q1, q3 = _median_time(lambda: fn(*args), reps, min_s)
+            nxt = iter(range(1 << 62))
+            med, q1, q3 = _median_time(lambda: fn(*copies[next(nxt) % n_copies]), reps, min_s)
             n = len(hi)
             rows.append(make_row(family=family, method=method, setting=setting, input_set=set_name, n=n,
                                  time_per_call_ns=med / n * 1e9, time_q1_ns=q1 / n * 1e9, time_q3_ns=q3 / n * 1e9,
                                  max_err=mx, rms_err=rms, unit="eps", failed=bad, source="run.py",
-                                 note="vectorised call over the whole set, process CPU time"))
+                                 note="vectorised call over the whole set (shuffled copies in turn), process CPU time"))
         # One Python call per element (plain floats): what a scalar call costs, interpreter included.
         ns = min(len(hi), 300 if quick else 2000)
         cols = [a[:ns].tolist() for a in args]
@@ -371,16 +388,18 @@ def time_python_kernels(quick, gecko_mod):
                                  note=f"a Python loop of scalar calls over the first {ns} elements, process CPU time"))
         if gecko_mod is not None:
             # The ufunc on the project's pool, 2 threads, wall time (process CPU time would add the threads up).
-            # The set is tiled to 1e6 elements (2e5 in --quick) so that the thread start is amortised.
+            # The set is repeated to 1e6 elements (2e5 in --quick), each repetition shuffled (shuffled_order),
+            # so that the thread start is amortised and no sequence of inputs repeats.
             ell = gecko_mod.elliptic
             uf = getattr(ell.ufuncs, gname)
-            reps_big = -(-(200_000 if quick else 1_000_000) // len(hi))
-            big = [np.tile(a, reps_big) for a in args]
+            n_big = (200_000 if quick else 1_000_000) // len(hi) * len(hi)
+            idx = shuffled_order(len(hi), n_big)
+            big = [a[idx] for a in args]
             n = len(big[0])
             before = ell.set_num_threads(2)
             try:
                 got = uf(*big)
-                mx, rms, bad = rel_err_eps(got, np.tile(hi, reps_big), np.tile(lo, reps_big))
+                mx, rms, bad = rel_err_eps(got, hi[idx], lo[idx])
                 med, q1, q3 = _median_wall(lambda: uf(*big), reps, min_s)
             finally:
                 ell.set_num_threads(before)
@@ -388,8 +407,8 @@ def time_python_kernels(quick, gecko_mod):
                                  setting="numpy array, 2 threads", input_set=set_name, n=n,
                                  time_per_call_ns=med / n * 1e9, time_q1_ns=q1 / n * 1e9, time_q3_ns=q3 / n * 1e9,
                                  max_err=mx, rms_err=rms, unit="eps", failed=bad, source="run.py",
-                                 note=f"the raw ufunc on the set tiled to {n} elements, 2 threads of the "
-                                      "project pool, wall time"))
+                                 note=f"the raw ufunc on the set repeated to {n} elements, each repetition "
+                                      "shuffled, 2 threads of the project pool, wall time"))
     return rows
 
 
@@ -525,9 +544,11 @@ def main(argv=None):
     info = machine_info(build_line)
     info["command"] = command
     info["run_time_s"] = round(runtime, 1)
-    info["timing"] = ("medians over repetitions; C++ kernels: thread CPU time of whole sweeps of the input set "
-                      "(bench/harness.hpp); batch: wall time; Python: process CPU time. The machine is "
-                      "shared with other jobs: compare within one run.")
+    info["timing"] = ("medians over repetitions; C++ kernels: thread CPU time of whole sweeps of the input set, "
+                      "each pass in a new order (bench/harness.hpp); batch: wall time; Python: process CPU time, "
+                      "on shuffled copies of the inputs. No timed call repeats the input sequence of the one "
+                      "before, so branch predictors cannot learn it. The machine is shared with other jobs: "
+                      "compare within one run.")
     write_csv(rows, out / "tradeoff.csv")
     with open(out / "tradeoff.json", "w") as f:
         json.dump({"machine": info, "fields": FIELDS, "rows": rows}, f, indent=1, allow_nan=True)

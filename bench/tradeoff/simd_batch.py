@@ -7,7 +7,9 @@ against scipy.special's (issue 16, item 1).
     PYTHONPATH=python python3 bench/tradeoff/simd_batch.py --quick  # smoke test, prints only
 
 Inputs: the bench/elliptic sets (phi ~ U(0, pi/2), m ~ U(0, 1); R_F: x, y, z log-uniform in
-[1e-6, 1e6], 5 % one zero), tiled to 1e6 elements. Every configuration (level x threads, and
+[1e-6, 1e6], 5 % one zero), repeated to 1e6 elements, each repetition in its own random order
+(a plain tile repeats one sequence, which a branch predictor learns; bench/tradeoff/run.py,
+shuffled_order). Every configuration (level x threads, and
 scipy) runs once per round, rounds interleaved, so that the load of this shared machine falls on
 all of them alike; the median wall time over the rounds is reported, and ratios within the run
 (against scipy and against gecko's scalar loop on 1 thread) are the figures to compare.
@@ -24,7 +26,7 @@ import time
 HERE = pathlib.Path(__file__).resolve().parent
 ROOT = HERE.parent.parent
 sys.path.insert(0, str(HERE))
-from run import make_row, read_column_file, rel_err_eps, write_csv  # noqa: E402
+from run import make_row, read_column_file, rel_err_eps, shuffled_order, write_csv  # noqa: E402
 
 CASES = [  # family, input set (as in bench/elliptic), data file, columns, reference, scipy name, gecko name
     ("F", "phi~U(0,pi/2), m~U(0,1)", "legendre_uniform.bin", ("phi", "m"), "F", "ellipkinc", "ellint_f"),
@@ -44,9 +46,9 @@ def time_simd_batch(quick, gecko_mod, n_target=None, rounds=None):
     rows = []
     for family, set_name, fname, argn, ref, sname, gname in CASES:
         data = read_column_file(ROOT / "bench" / "elliptic" / "data" / fname)
-        k = -(-n_target // len(data[ref]))
-        args = [np.tile(np.ascontiguousarray(data[a]), k)[:n_target] for a in argn]
-        hi, lo = np.tile(data[ref], k)[:n_target], np.tile(data[ref + "_lo"], k)[:n_target]
+        idx = shuffled_order(len(data[ref]), n_target)  # each repetition of the set in its own order
+        args = [np.ascontiguousarray(data[a][idx]) for a in argn]
+        hi, lo = data[ref][idx], data[ref + "_lo"][idx]
         uf, sfn = getattr(ell.ufuncs, gname), getattr(sp, sname)
         configs = [(f"scipy.special.{sname}", "numpy array, 1 thread", None, None)]
         configs += [(f"gecko.elliptic.ufuncs.{gname}", f"SIMD {lv}, {t} thread{'s' if t > 1 else ''}", lv, t)

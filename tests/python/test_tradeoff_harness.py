@@ -169,3 +169,18 @@ def test_order_rows_groups_families_then_input_sets():
     rows = [mk("R_J", "a", "1"), mk("F", "u", "2"), mk("F", "n", "3"), mk("F", "u", "4"), mk("batch", "b", "5"),
             mk("F", "n", "6")]
     assert [r["method"] for r in run.order_rows(rows)] == ["2", "4", "3", "6", "1", "5"]
+
+
+def test_shuffled_order_repeats_each_input_once_per_block_in_new_orders():
+    # n = 7 inputs repeated to 30 elements: four full blocks and two of a fifth; every full block is a
+    # permutation of range(n), and no two blocks share their order (a branch predictor would learn it)
+    idx = run.shuffled_order(7, 30, seed=3)
+    assert idx.shape == (30,)
+    blocks = [idx[k * 7:(k + 1) * 7] for k in range(4)]
+    for b in blocks:
+        assert sorted(b.tolist()) == list(range(7))
+    assert len({tuple(b.tolist()) for b in blocks}) == 4
+    assert set(idx[28:].tolist()) <= set(range(7))
+    # deterministic for a seed, different for another
+    assert np.array_equal(idx, run.shuffled_order(7, 30, seed=3))
+    assert not np.array_equal(run.shuffled_order(1000, 1000, seed=3), run.shuffled_order(1000, 1000, seed=4))
