@@ -12,9 +12,9 @@
 // data-dependent branches of a sequence of inputs it has seen before, and a kernel whose branch
 // pattern follows its inputs (the duplication step count of gecko::ellint_f) was timed too fast.
 // Measured on the 2-core EPYC (`profile_ellint_f --learning`, bench/results/
-// profile_ellint_f_learning.md): gecko::ellint_f on the uniform set took 32.3 ns in the first pass
-// and 25.6 ns in passes 321-640 when every pass repeated the array's order, and 32.3-33.1 ns
-// throughout with a new order per pass; Boost's ellint_1 took 59-64 ns either way. The repetitions of
+// profile_ellint_f_learning.md): gecko::ellint_f on the uniform set took 30.8 ns in the first pass
+// and 24.6 ns in passes 321-640 when every pass repeated the array's order, and 31.1-33.2 ns
+// throughout with a new order per pass; Boost's ellint_1 took 58-64 ns either way. The repetitions of
 // all cases are interleaved (rep 1 of every case, then rep 2, ...) with a rotating start, so a
 // noisy interval on this shared machine hits all methods alike instead of one method's block.
 //
