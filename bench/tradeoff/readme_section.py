@@ -251,7 +251,8 @@ def render(results):
              "relative error against mpmath at 40 digits. The peers take the modulus k = √m, precomputed; "
              "\"own k\" is their error at the m' = k² they received (`bench/results/elliptic.md` has every "
              "precision setting and GSL mode, and the error quartiles). scipy and gecko's Python functions are "
-             "called once on the whole array (per-element time).",
+             "called once on the whole array (per-element time). Every timed pass or call sees the inputs in a "
+             "new order, so that no branch predictor learns the sequence (`bench/harness.hpp`, `visit_order`).",
              elliptic_section(rows, results),
              "### One elastica segment\n\nLength of one elastica segment (docs/theory/two_level_seta.md, the 160 mpmath segments of "
              "`tests/data/seta_solver_segments.csv`, each reference from independent 40-digit quadrature). The "
