@@ -19,6 +19,9 @@
 //                     deviations (E2 = e r^2, E3 = f r^3, e = dx dy - dz^2, f = dx dy dz), computed
 //                     beside the duplication instead of after it (Estrin in r); not bitwise the same
 //   all three         paired sqrt + predicted steps + tail in 1/A
+//   known steps       a bound, not a kernel: each input's exact step count, computed before timing,
+//                     runs in a counted loop (what a perfect prediction of the count would give;
+//                     the exact test after it then takes no step); bitwise the same values
 // and boost::math::ellint_1 (promote_double<false>) as in bench_elliptic, on the same two input
 // sets (bench/elliptic/data, mpmath references). Timing: bench/harness.hpp (thread CPU time,
 // medians of interleaved repetitions): compare ratios within one run.
@@ -61,6 +64,7 @@ enum flag : unsigned {
   paired_sqrt = 1u << 3,
   predicted_steps = 1u << 4,
   tail_in_r = 1u << 5,
+  known_steps = 1u << 6,
 };
 
 #if defined(__SSE2__)
@@ -102,7 +106,7 @@ inline double eval_tail(const tail_coefficients& c, double r) {
 
 // legendre_rf_imp (gecko/elliptic/ellint_f.hpp) at full precision, with the flags above.
 template <unsigned F>
-inline double rf_variant(double s, double c, double d2) {
+inline double rf_variant(double s, double c, double d2, int known = 0) {
   using gecko::detail::max_of;
   using std::fabs;
   using std::sqrt;
@@ -145,6 +149,9 @@ inline double rf_variant(double s, double c, double d2) {
       const int n = (S <= lim) + (4 * S <= lim) + (16 * S <= lim) + (64 * S <= lim);
       for (; step <= n; ++step) duplicate();
     }
+    if constexpr ((F & known_steps) != 0) {
+      for (; step <= known; ++step) duplicate();
+    }
     for (; X + Y + Z <= lim && step < gecko::detail::carlson_max_steps<double>; ++step) duplicate();
   }
   const double A = (X + Y + Z) * (1.0 / 3);
@@ -167,16 +174,38 @@ inline double rf_variant(double s, double c, double d2) {
 
 template <unsigned F>
 struct variant {
-  static double eval(double phi, double m) {
+  static double eval(double phi, double m, int known = 0) {
     const double a = std::fabs(phi);
     // the inputs of both sets are all in the common case (checked in main)
     double s, c;
     gecko::detail::first_quadrant_sincos(a, s, c);
     const double d2 = c * c + (1 - m) * (s * s);
     if constexpr ((F & sincos_only) != 0) return std::copysign(s + d2, phi);
-    return std::copysign(rf_variant<F>(s, c, d2), phi);
+    return std::copysign(rf_variant<F>(s, c, d2, known), phi);
   }
 };
+
+// The number of duplication steps the kernel's loop takes for (phi, m) (its exact test alone).
+inline int duplication_steps(double phi, double m) {
+  double s, c;
+  gecko::detail::first_quadrant_sincos(std::fabs(phi), s, c);
+  const double d2 = c * c + (1 - m) * (s * s);
+  constexpr double tol = gecko::detail::carlson_tolerance<double, 0>::rf11;
+  const double x = c * c, A0 = (x + d2 + 1) * (1.0 / 3);
+  const double D = gecko::detail::max_of(gecko::detail::max_of(std::fabs(A0 - x), std::fabs(A0 - d2)), std::fabs(A0 - 1));
+  const double d = std::sqrt(d2), cd = c + d, c1 = c + 1, d1 = d + 1;
+  double X = cd * c1, Y = cd * d1, Z = c1 * d1;
+  const double lim = D * (3 / tol);
+  int n = 0;
+  for (int step = 1; X + Y + Z <= lim && step < gecko::detail::carlson_max_steps<double>; ++step, ++n) {
+    const double rx = std::sqrt(X), ry = std::sqrt(Y), rz = std::sqrt(Z);
+    const double xy = rx + ry, xz = rx + rz, yz = ry + rz;
+    X = xy * xz;
+    Y = xy * yz;
+    Z = xz * yz;
+  }
+  return n;
+}
 struct gecko_f {
   static double eval(double phi, double m) { return gecko::ellint_f(phi, m); }
 };
@@ -189,6 +218,7 @@ struct boost_f {  // takes k = sqrt(m), precomputed outside the timing as in ben
 struct input_set {
   std::string name;
   std::vector<double> phi, m, k, hi, lo;
+  std::vector<int> steps;  // duplication_steps of each input (the known-steps bound)
 };
 template <class K, bool Modulus = false>
 void sweep(const void* p, double* out, const visit_order& order) {
@@ -196,6 +226,12 @@ void sweep(const void* p, double* out, const visit_order& order) {
   const double* a = s.phi.data();
   const double* b = Modulus ? s.k.data() : s.m.data();
   order.for_each(s.phi.size(), [&](std::size_t i) { out[i] = K::eval(a[i], b[i]); });
+}
+void sweep_known_steps(const void* p, double* out, const visit_order& order) {
+  const auto& s = *static_cast<const input_set*>(p);
+  const double *a = s.phi.data(), *b = s.m.data();
+  const int* n = s.steps.data();
+  order.for_each(s.phi.size(), [&](std::size_t i) { out[i] = variant<known_steps>::eval(a[i], b[i], n[i]); });
 }
 
 // Time per evaluation over consecutive blocks of passes (1, 1, 1, 2, 5, ..., 320 passes: 640 in
@@ -261,13 +297,14 @@ int run(int argc, char** argv) {
   for (const auto& [file, name] : {std::pair<const char*, const char*>{"legendre_uniform.bin", "phi~U(0,pi/2), m~U(0,1)"},
                                    {"legendre_near1.bin", "phi~U(0,pi/2), m=1-10^-U(0,16)"}}) {
     const column_file f(data_dir + "/" + file);
-    input_set s{name, f["phi"], f["m"], {}, f["F"], f["F_lo"]};
+    input_set s{name, f["phi"], f["m"], {}, f["F"], f["F_lo"], {}};
     for (std::size_t i = 0; i < s.m.size(); ++i) {
       if (!(std::fabs(s.phi[i]) <= gecko::detail::pi_constants<double>::pio2_below && s.m[i] >= 0 && s.m[i] <= 1)) {
         std::cerr << file << ": row " << i << " is outside the common case this profile copies\n";
         return 1;
       }
       s.k.push_back(std::sqrt(s.m[i]));
+      s.steps.push_back(duplication_steps(s.phi[i], s.m[i]));
     }
     sets.push_back(std::move(s));
   }
@@ -295,6 +332,7 @@ int run(int argc, char** argv) {
       {"no series (stage)", sweep<variant<no_series>>, false},
       {"predicted steps", sweep<variant<predicted_steps>>, true},
       {"tail in 1/A", sweep<variant<tail_in_r>>, true},
+      {"known steps (bound)", sweep_known_steps, true},
   };
   if (have_sse2) {
     methods.push_back({"paired sqrt (SSE2)", sweep<variant<paired_sqrt>>, true});
