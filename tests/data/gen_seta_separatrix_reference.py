@@ -86,6 +86,20 @@ CASES = [
                          EA2=37.36091311154138, l1=1.0, l2=0.0010364878387884408, alpha1=0.07932555321778109,
                          alpha2=0.4805687627432984, w=1.0),
      [8.635534569003983], "bracket"),
+    # campaign design 1005: four states given up in double (status not_reached) and solved by the
+    # retry in long double (gecko/seta/critical_line.hpp, retry_in_long_double); the campaign's Ft
+    ("long_double_1005", dict(EI1=0.27838952633169495, EI2=1.270807598552047, EA1=34629.42471111142,
+                              EA2=87772.04693377482, l1=1.0, l2=0.09695729933128887, alpha1=1.006282082105714,
+                              alpha2=0.2716690124304871, w=1.0),
+     [164.2456444511225, 210.259320846518, 377.08184261870156, 418.5608453067587]),
+    # campaign design 3413 at the campaign's Ft (the line depends on what is asked together): at
+    # Ft = 2194.64 given up in double, where a march at a looser tolerance had found it 3.2e-11 off
+    # (validation/README.md); the long-double retry solves it
+    ("long_double_3413", dict(EI1=2.1508951161933365, EI2=30.884354342568855, EA1=198769.69423187207,
+                              EA2=2413040.361922214, l1=1.0, l2=0.00167315803842591, alpha1=1.5134430654372117,
+                              alpha2=0.0072006546136923815, w=1.0),
+     [-2022.0768647123527, 0.0, 1679.9933874470153, 2118.025592969333, 1977.1508253833308, 2194.637416175497],
+     "bracket"),
 ]
 AGREE = 1e-20
 

@@ -49,7 +49,18 @@ def test_short_campaign_no_silently_wrong_point():
     assert ok.mean() > 0.5
     assert not cl["number_with_status"].any()
     assert not cl["nonfinite_ok"].any()
-    assert cl["inconclusive_fn"].sum() <= 0.1 * ok.sum()
+    # The verifier (double shooting) cannot resolve a segment next to its separatrix beyond about 30
+    # saddle time constants l sqrt(N (1 + N/EA) / EI) (this guard counts from 25), where gecko solves
+    # states (the separatrix limit, the long-double retry; those are checked in arbitrary precision
+    # by validation/separatrix.py). Among the other states it must decide at least 90 %, and they
+    # must be most of the solved ones, so that this check is not vacuous.
+    d = {k: P[:, i][:, None] for i, k in enumerate(campaign.FIELDS)}
+    N = np.hypot(Fn, FT)
+    long_segment = ((d["l1"] * np.sqrt(N * (1 + N / d["EA1"]) / d["EI1"]) >= 25) |
+                    (d["l2"] * np.sqrt(N * (1 + N / d["EA2"]) / d["EI2"]) >= 25))
+    short = ok & ~long_segment
+    assert short.sum() >= 0.8 * ok.sum()
+    assert (cl["inconclusive_fn"] & short).sum() <= 0.1 * short.sum()
     wrong = cl["wrong_fn"] | cl["wrong_beta"]
     bad = [(P[i].tolist(), FT[i, j], Fn[i, j], v["dFn"][i, j]) for i, j in zip(*np.nonzero(wrong))]
     assert not bad, bad

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -104,6 +105,35 @@ TEST_CASE("a line that never leaves its natural state is marched from it", "[set
     INFO("Ft " << st.Ft << " status " << static_cast<int>(st.status));
     CHECK((st.status == gecko::critical_status::converged || st.status == gecko::critical_status::inadmissible));
   }
+}
+
+TEST_CASE("states given up in double are solved along the same line in long double", "[seta][separatrix]") {
+  // Campaign design 1005: in double its line and the separatrix march stop before all four Ft
+  // (status not_reached, the limit system's Newton at a rounding floor); critical_line_at retries
+  // them in long double (gecko/seta/critical_line.hpp, retry_in_long_double). The states are
+  // checked against their references by the first test case (long_double_1005); here, that the
+  // double call returns the long-double states rounded, and that a state double solves is its own.
+  if (std::numeric_limits<long double>::digits <= std::numeric_limits<double>::digits) {
+    WARN("long double is no wider than double here: no retry");
+    return;
+  }
+  const auto s = reference_design("long_double_1005");
+  const std::vector<double> Ft{0.0, 164.2456444511225, 210.259320846518, 377.08184261870156, 418.5608453067587};
+  const auto got = gecko::critical_line_at(s, Ft);
+  const gecko::TwoLevelSeta<long double> sl{s.EI1, s.EI2, s.EA1, s.EA2, s.l1, s.l2, s.alpha1, s.alpha2, s.w};
+  const auto wide = gecko::critical_line_at(sl, std::vector<long double>(Ft.begin(), Ft.end()));
+  for (std::size_t k = 1; k < Ft.size(); ++k) {
+    INFO("Ft " << Ft[k] << " status " << static_cast<int>(got[k].status));
+    CHECK((got[k].status == gecko::critical_status::converged || got[k].status == gecko::critical_status::inadmissible));
+    CHECK(got[k].status == wide[k].status);
+    CHECK(got[k].Fn == static_cast<double>(wide[k].Fn));
+    CHECK(got[k].theta_joint == static_cast<double>(wide[k].theta_joint));
+    CHECK(got[k].turning_points_beam == wide[k].turning_points_beam);
+  }
+  // The natural state (Ft = 0) is solved in double and kept as double computed it, within the
+  // tolerance of the long-double state.
+  REQUIRE(got[0].status == gecko::critical_status::converged);
+  CHECK(std::fabs(got[0].Fn - static_cast<double>(wide[0].Fn)) <= 1e-12 * std::fabs(got[0].Fn));
 }
 
 TEST_CASE("the walk past the saddle agrees with the walk calibrated to the length", "[seta][separatrix][admissibility]") {

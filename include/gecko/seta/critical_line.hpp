@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 #include "gecko/core/error.hpp"
@@ -68,6 +69,61 @@ inline critical_line_result<T> critical_line_imp(const TwoLevelSeta<T>& s, const
 
 template <class Policy, bool E1, bool E2, class T>
 inline void critical_line_at_imp(const TwoLevelSeta<T>& s, const T* Ft, std::size_t count,
+                                 const critical_line_options<T>& opt, critical_state<T>* out);
+
+// The states that double precision gave up on (status not_converged: the natural state's homotopy
+// stalled; not_reached: the followed line, and its separatrix limit, stopped before them), solved
+// again along the same line in long double where it is wider than double (x87's 64-bit
+// significand on x86). Next to a segment's separatrix the solves stall at a rounding floor: the
+// Newton step of the separatrix limit system stops shrinking at 1e-12 to 1e-9 of the state, above
+// the tolerance (validation/README.md, "Lines that never leave their start, and rounding
+// floors"); 11 more bits lower that floor below the tolerance. Only a converged or inadmissible
+// answer replaces the double one: any other status of the retry leaves the give-up as it was.
+// States solved in double are not touched.
+template <class Policy, bool E1, bool E2>
+inline void retry_in_long_double(const TwoLevelSeta<double>& s, const double* Ft, std::size_t count,
+                                 const critical_line_options<double>& opt, critical_state<double>* out) {
+  using L = long double;
+  std::vector<std::size_t> which;
+  for (std::size_t i = 0; i < count; ++i)
+    if (out[i].status == critical_status::not_reached || out[i].status == critical_status::not_converged)
+      which.push_back(i);
+  if (which.empty()) return;
+  const TwoLevelSeta<L> sl{L(s.EI1), L(s.EI2), L(s.EA1), L(s.EA2), L(s.l1), L(s.l2), L(s.alpha1), L(s.alpha2), L(s.w)};
+  critical_line_options<L> ol;
+  ol.ft_end = L(opt.ft_end);
+  ol.tolerance = L(opt.tolerance);
+  ol.line_tolerance = L(opt.line_tolerance);
+  ol.max_points = opt.max_points;
+  ol.resolve_nodes = opt.resolve_nodes;
+  ol.strain_limit = L(opt.strain_limit);
+  std::vector<L> ft(which.size());
+  std::vector<critical_state<L>> res(which.size());
+  for (std::size_t k = 0; k < which.size(); ++k) {
+    ft[k] = L(Ft[which[k]]);
+    res[k].Ft = ft[k];
+  }
+  critical_line_at_imp<Policy, E1, E2>(sl, ft.data(), ft.size(), ol, res.data());
+  for (std::size_t k = 0; k < which.size(); ++k) {
+    const critical_state<L>& r = res[k];
+    if (r.status != critical_status::converged && r.status != critical_status::inadmissible) continue;
+    critical_state<double>& o = out[which[k]];
+    o.Fn = double(r.Fn);
+    o.theta_joint = double(r.theta_joint);
+    o.status = r.status;
+    o.iterations = r.iterations;
+    o.theta_rate_joint = double(r.theta_rate_joint);
+    o.theta_rate_base = double(r.theta_rate_base);
+    o.turning_points_beam = r.turning_points_beam;
+    o.turning_points_spatula = r.turning_points_spatula;
+    o.min_z = double(r.min_z);
+    o.min_z_at = double(r.min_z_at);
+    o.max_axial_strain = double(r.max_axial_strain);
+  }
+}
+
+template <class Policy, bool E1, bool E2, class T>
+inline void critical_line_at_imp(const TwoLevelSeta<T>& s, const T* Ft, std::size_t count,
                                  const critical_line_options<T>& opt, critical_state<T>* out) {
   using System = seta_system<T, Policy, E1, E2>;
   const System sys(make_seta_params(s), opt.strain_limit);
@@ -100,6 +156,9 @@ inline void critical_line_at_imp(const TwoLevelSeta<T>& s, const T* Ft, std::siz
   };
   if (!pos.empty()) run(pos, hi);
   if (!neg.empty()) run(neg, lo);
+  if constexpr (std::is_same<T, double>::value &&
+                std::numeric_limits<long double>::digits > std::numeric_limits<double>::digits)
+    retry_in_long_double<Policy, E1, E2>(s, Ft, count, opt, out);
 }
 
 template <class T, class Policy>
