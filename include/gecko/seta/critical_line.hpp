@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <exception>
 #include <limits>
 #include <type_traits>
 #include <vector>
@@ -90,7 +91,7 @@ inline void retry_in_long_double(const TwoLevelSeta<double>& s, const double* Ft
       which.push_back(i);
   if (which.empty()) return;
   const TwoLevelSeta<L> sl{L(s.EI1), L(s.EI2), L(s.EA1), L(s.EA2), L(s.l1), L(s.l2), L(s.alpha1), L(s.alpha2), L(s.w)};
-  critical_line_options<L> ol;
+  critical_line_options<L> ol;  // every field of critical_line_options, converted
   ol.ft_end = L(opt.ft_end);
   ol.tolerance = L(opt.tolerance);
   ol.line_tolerance = L(opt.line_tolerance);
@@ -103,7 +104,13 @@ inline void retry_in_long_double(const TwoLevelSeta<double>& s, const double* Ft
     ft[k] = L(Ft[which[k]]);
     res[k].Ft = ft[k];
   }
-  critical_line_at_imp<Policy, E1, E2>(sl, ft.data(), ft.size(), ol, res.data());
+  // The retry can only add solved states: an error raised inside it (a kernel's domain error under
+  // the raising policy, on a path the double solve did not take) leaves the give-ups as they were.
+  try {
+    critical_line_at_imp<Policy, E1, E2>(sl, ft.data(), ft.size(), ol, res.data());
+  } catch (const std::exception&) {
+    return;
+  }
   for (std::size_t k = 0; k < which.size(); ++k) {
     const critical_state<L>& r = res[k];
     if (r.status != critical_status::converged && r.status != critical_status::inadmissible) continue;
