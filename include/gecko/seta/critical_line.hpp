@@ -78,9 +78,10 @@ inline void critical_line_at_imp(const TwoLevelSeta<T>& s, const T* Ft, std::siz
 // significand on x86). Next to a segment's separatrix the solves stall at a rounding floor: the
 // Newton step of the separatrix limit system stops shrinking at 1e-12 to 1e-9 of the state, above
 // the tolerance (validation/README.md, "Lines that never leave their start, and rounding
-// floors"); 11 more bits lower that floor below the tolerance. Only a converged or inadmissible
-// answer replaces the double one: any other status of the retry leaves the give-up as it was.
-// States solved in double are not touched.
+// floors"); 11 more bits lower that floor, below the tolerance for two give-ups in five of the
+// 10,000-design re-run (validation/README.md, "Give-ups retried in long double"). Only a converged
+// or inadmissible answer replaces the double one: any other status of the retry leaves the give-up
+// as it was. States solved in double are not touched.
 template <class Policy, bool E1, bool E2>
 inline void retry_in_long_double(const TwoLevelSeta<double>& s, const double* Ft, std::size_t count,
                                  const critical_line_options<double>& opt, critical_state<double>* out) {
