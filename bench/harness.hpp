@@ -41,6 +41,7 @@
 #include <ctime>
 #include <fstream>
 #include <limits>
+#include <numeric>
 #include <string>
 #include <vector>
 
@@ -84,15 +85,6 @@ struct visit_order {
   }
 };
 
-inline std::size_t gcd_of(std::size_t a, std::size_t b) {
-  while (b != 0) {
-    const std::size_t t = a % b;
-    a = b;
-    b = t;
-  }
-  return a;
-}
-
 // A pseudo-random order of n inputs from a 64-bit state (splitmix64), deterministic for a seed.
 inline visit_order next_visit_order(std::size_t n, std::uint64_t& state) {
   auto next = [&] {
@@ -107,7 +99,7 @@ inline visit_order next_visit_order(std::size_t n, std::uint64_t& state) {
   // strides away from 1 and n - 1, which would keep neighbours together
   const std::size_t lo = n >= 16 ? n / 8 : 1, span = n >= 16 ? n - 2 * lo : n - 1;
   o.stride = lo + static_cast<std::size_t>(next() % span);
-  while (gcd_of(o.stride, n) != 1) o.stride = o.stride + 1 < n ? o.stride + 1 : 1;
+  while (std::gcd(o.stride, n) != 1) o.stride = o.stride + 1 < n ? o.stride + 1 : 1;
   return o;
 }
 

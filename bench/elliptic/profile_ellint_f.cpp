@@ -106,7 +106,7 @@ inline double eval_tail(const tail_coefficients& c, double r) {
 
 // legendre_rf_imp (gecko/elliptic/ellint_f.hpp) at full precision, with the flags above.
 template <unsigned F>
-inline double rf_variant(double s, double c, double d2, int known = 0) {
+inline double rf_variant(double s, double c, double d2, int known = 0, int* taken = nullptr) {
   using gecko::detail::max_of;
   using std::fabs;
   using std::sqrt;
@@ -154,6 +154,7 @@ inline double rf_variant(double s, double c, double d2, int known = 0) {
     }
     for (; X + Y + Z <= lim && step < gecko::detail::carlson_max_steps<double>; ++step) duplicate();
   }
+  if (taken) *taken = step - 1;
   const double A = (X + Y + Z) * (1.0 / 3);
   double r, w;
 #if defined(__SSE2__)
@@ -174,37 +175,22 @@ inline double rf_variant(double s, double c, double d2, int known = 0) {
 
 template <unsigned F>
 struct variant {
-  static double eval(double phi, double m, int known = 0) {
+  static double eval(double phi, double m, int known = 0, int* taken = nullptr) {
     const double a = std::fabs(phi);
     // the inputs of both sets are all in the common case (checked in main)
     double s, c;
     gecko::detail::first_quadrant_sincos(a, s, c);
     const double d2 = c * c + (1 - m) * (s * s);
     if constexpr ((F & sincos_only) != 0) return std::copysign(s + d2, phi);
-    return std::copysign(rf_variant<F>(s, c, d2, known), phi);
+    return std::copysign(rf_variant<F>(s, c, d2, known, taken), phi);
   }
 };
 
 // The number of duplication steps the kernel's loop takes for (phi, m) (its exact test alone).
 inline int duplication_steps(double phi, double m) {
-  double s, c;
-  gecko::detail::first_quadrant_sincos(std::fabs(phi), s, c);
-  const double d2 = c * c + (1 - m) * (s * s);
-  constexpr double tol = gecko::detail::carlson_tolerance<double, 0>::rf11;
-  const double x = c * c, A0 = (x + d2 + 1) * (1.0 / 3);
-  const double D = gecko::detail::max_of(gecko::detail::max_of(std::fabs(A0 - x), std::fabs(A0 - d2)), std::fabs(A0 - 1));
-  const double d = std::sqrt(d2), cd = c + d, c1 = c + 1, d1 = d + 1;
-  double X = cd * c1, Y = cd * d1, Z = c1 * d1;
-  const double lim = D * (3 / tol);
-  int n = 0;
-  for (int step = 1; X + Y + Z <= lim && step < gecko::detail::carlson_max_steps<double>; ++step, ++n) {
-    const double rx = std::sqrt(X), ry = std::sqrt(Y), rz = std::sqrt(Z);
-    const double xy = rx + ry, xz = rx + rz, yz = ry + rz;
-    X = xy * xz;
-    Y = xy * yz;
-    Z = xz * yz;
-  }
-  return n;
+  int taken = 0;
+  variant<exact>::eval(phi, m, 0, &taken);
+  return taken;
 }
 struct gecko_f {
   static double eval(double phi, double m) { return gecko::ellint_f(phi, m); }
