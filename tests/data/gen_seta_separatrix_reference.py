@@ -100,6 +100,14 @@ CASES = [
                               alpha2=0.0072006546136923815, w=1.0),
      [-2022.0768647123527, 0.0, 1679.9933874470153, 2118.025592969333, 1977.1508253833308, 2194.637416175497],
      "bracket"),
+    # campaign design 809 at its Ft >= 0: at Ft = 2354.11, 2272.87 and 2522.88 given up in double and
+    # refused by the long-double retry while it measured its limit segments at double's distances
+    # (2^-36, 2^-38 of the scale); solved since the retry measures them 11 binades deeper
+    # (gecko/seta/detail/separatrix_scales.hpp, separatrix_resolved_exponent_of)
+    ("ld_exponents_809", dict(EI1=2.541220947447112, EI2=0.8454396224007961, EA1=INF, EA2=3188845.4880448803,
+                              l1=1.0, l2=0.40457611073471206, alpha1=1.0384787826742332,
+                              alpha2=0.08361018232993746, w=1.0),
+     [0.0, 2354.1102792027564, 977.5472359614504, 2272.8681639357587, 2522.883661968692]),
 ]
 AGREE = 1e-20
 

@@ -136,6 +136,29 @@ TEST_CASE("states given up in double are solved along the same line in long doub
   CHECK(std::fabs(got[0].Fn - static_cast<double>(wide[0].Fn)) <= 1e-12 * std::fabs(got[0].Fn));
 }
 
+TEST_CASE("a wider type measures its limit segments as many binades deeper as its extra digits", "[seta][separatrix]") {
+  // gecko/seta/detail/separatrix_scales.hpp: double's scales unchanged (the states solved in double
+  // are bit for bit those before), long double's deeper by its extra digits, where its rounding
+  // leaves delta as many bits as double's does at 2^-36. Campaign design 809's three states past
+  // its stall (rows ld_exponents_809 of the reference table, checked by the first test case) were
+  // refused by the retry at double's scales.
+  using namespace gecko::detail;
+  STATIC_REQUIRE(separatrix_resolved_exponent_of<double>() == separatrix_resolved_exponent);
+  STATIC_REQUIRE(separatrix_unresolved_exponent_of<double>() == separatrix_unresolved_exponent);
+  STATIC_REQUIRE(separatrix_resolved_exponent_of<float>() == separatrix_resolved_exponent);
+  constexpr int extra = std::numeric_limits<long double>::digits - std::numeric_limits<double>::digits;
+  STATIC_REQUIRE(separatrix_resolved_exponent_of<long double>() == separatrix_resolved_exponent - extra);
+  STATIC_REQUIRE(separatrix_unresolved_exponent_of<long double>() == separatrix_unresolved_exponent - extra);
+  if (extra <= 0) return;
+  const auto s = reference_design("ld_exponents_809");
+  const auto got = gecko::critical_line_at(s, std::vector<double>{0.0, 2354.1102792027564, 977.5472359614504,
+                                                                   2272.8681639357587, 2522.883661968692});
+  for (const auto& st : got) {
+    INFO("Ft " << st.Ft << " status " << static_cast<int>(st.status));
+    CHECK((st.status == gecko::critical_status::converged || st.status == gecko::critical_status::inadmissible));
+  }
+}
+
 TEST_CASE("the walk past the saddle agrees with the walk calibrated to the length", "[seta][separatrix][admissibility]") {
   // At Ft = 145 the spatula's separatrix distance (~1e-12 of |M| + N) is still resolved, so the
   // calibrated walk (eta solved from the length) measures it; the walk past the saddle (the

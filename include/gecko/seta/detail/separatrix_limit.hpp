@@ -220,7 +220,7 @@ inline int separatrix_mask(const T lengths[2], const T gaps[2]) {
 template <class T>
 inline bool separatrix_unresolved(const T lengths[2], const T gaps[2], int i) {
   return lengths[i] >= T(separatrix_long_segment) &&
-         std::fabs(gaps[i]) < std::ldexp(T(1), separatrix_unresolved_exponent);
+         std::fabs(gaps[i]) < std::ldexp(T(1), separatrix_unresolved_exponent_of<T>());
 }
 
 // Whether a segment's turning points at a state past the stall can be the followed line's: within
@@ -266,7 +266,8 @@ inline bool separatrix_state_exact(const separatrix_system<T, Policy, E1, E2>& l
     // scale keep delta to about 1e-4), then L(delta) = L_b + slope log(delta_b / delta), exact to
     // O(delta log delta): the dwell at the saddle, slope = passages x tau, with tau =
     // sqrt(EI / (N (1 + c N))) the inverse of the saddle's rate.
-    const T da = std::ldexp(scale, separatrix_resolved_exponent), db = std::ldexp(scale, separatrix_resolved_exponent - 2);
+    const T da = std::ldexp(scale, separatrix_resolved_exponent_of<T>()),
+            db = std::ldexp(scale, separatrix_resolved_exponent_of<T>() - 2);
     const T ss = X3s >= 0 ? T(1) : T(-1), se = X3e >= 0 ? T(1) : T(-1);
     const T tau = std::sqrt(EI / (c.N * (1 + cc * c.N)));
     int sides = 0;

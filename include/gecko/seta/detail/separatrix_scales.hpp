@@ -9,6 +9,8 @@
 // formed from the state by cancellation against |M| + N.
 #pragma once
 
+#include <limits>
+
 namespace gecko {
 namespace detail {
 
@@ -28,6 +30,20 @@ constexpr int separatrix_resolved_exponent = -36;
 // Below 2^-40 of the scale a state's digits no longer resolve its separatrix distance: the length
 // equations, whose derivatives go like 1/delta, cannot be differentiated there.
 constexpr int separatrix_unresolved_exponent = -40;
+
+// The two exponents above for a type T: they are double's, set by its rounding (eps = 2^-52 of the
+// scale against 2^-36 leaves delta 2^-16 relative), so a wider type resolves as many binades deeper
+// as it has more digits (long double on x86: 11, to 2^-47 and 2^-51), with delta again 2^-16
+// relative there. The long-double retry of give-ups (critical_line.hpp) measures its limit segments
+// there: the law's extrapolation from the measured lengths to the segment's is that much shorter.
+template <class T>
+constexpr int separatrix_resolved_exponent_of() {
+  return separatrix_resolved_exponent - (std::numeric_limits<T>::digits > 53 ? std::numeric_limits<T>::digits - 53 : 0);
+}
+template <class T>
+constexpr int separatrix_unresolved_exponent_of() {
+  return separatrix_unresolved_exponent - (std::numeric_limits<T>::digits > 53 ? std::numeric_limits<T>::digits - 53 : 0);
+}
 
 }  // namespace detail
 }  // namespace gecko
