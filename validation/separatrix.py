@@ -53,6 +53,22 @@ def _alarm(signum, frame):
     raise _Timeout()
 
 
+def time_limited(limit, fn, *args, **kwargs):
+    """fn(*args, **kwargs), or raise TimeLimit after `limit` seconds (0 or None: no limit; SIGALRM,
+    so in the main thread of a worker process)."""
+    if limit:
+        signal.signal(signal.SIGALRM, _alarm)
+        signal.alarm(max(1, int(limit)))
+    try:
+        return fn(*args, **kwargs)
+    finally:
+        if limit:
+            signal.alarm(0)
+
+
+TimeLimit = _Timeout
+
+
 def check(job):
     import gecko
     from mpmath import mp

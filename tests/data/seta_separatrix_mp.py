@@ -220,8 +220,8 @@ def _bracket(d, Ft, Fn, length, span_rel):
     I = st.Integrator(prec=bits, tol_bits=bits - 20)
     dm = st.mp_design(d)
 
-    def shoot(x, track=False):
-        r = st.shoot_back(dm, x, Ft, I, track=track)
+    def shoot(x, track=False, heights=False):
+        r = st.shoot_back(dm, x, Ft, I, track=track, heights=heights)
         return r["theta10"] - dm["alpha1"], r
 
     shoot.prec = I.mprec
@@ -235,14 +235,16 @@ def _sign_change(ga, gb):
     return ga == 0 or gb == 0 or (ga > 0) != (gb > 0)
 
 
-def bracket_route(d, Ft, Fn, length, span_rel=1e-11, halvings=None):
+def bracket_route(d, Ft, Fn, length, span_rel=1e-11, halvings=None, heights=False):
     """The root of the backward shot's residual g(Fn) = theta1(0) - alpha1 at fixed Ft between
     Fn -+ span_rel max(1, |Fn|), where g changes sign there (g is continuous in Fn, so a root lies
     between), bisected `halvings` times: dict(Fn, beta, q = theta1'(0), turns = (beam, spatula)),
     in mp. None where g has one sign at both ends (the route decides nothing). `length`: both
     segments in saddle time constants (saddle_lengths; the precision follows it, see _bracket).
     The shot's path (its turning points, its base rate) is that of the root only within about
-    e^-length of it, so the default bisects 40 + 1.5 length times."""
+    e^-length of it, so the default bisects 40 + 1.5 length times. heights: also min_z, the lowest
+    height of the seta on that shot (seta_taylor.shoot_back), which holds it on the root's path to
+    about e^-length as well."""
     if halvings is None:
         halvings = 40 + int(1.5 * length)
     shoot, lo, hi, ((glo, _), (ghi, _)) = _bracket(d, Ft, Fn, length, span_rel)
@@ -257,8 +259,11 @@ def bracket_route(d, Ft, Fn, length, span_rel=1e-11, halvings=None):
             else:
                 hi = mid
         mid = (lo + hi) / 2
-        r = shoot(mid, track=True)[1]
-        return dict(Fn=mid, beta=r["beta"], q=r["theta1p0"], turns=(r["turn1"], r["turn2"]))
+        r = shoot(mid, track=True, heights=heights)[1]
+        out = dict(Fn=mid, beta=r["beta"], q=r["theta1p0"], turns=(r["turn1"], r["turn2"]))
+        if heights:
+            out["min_z"] = r["min_z"]
+        return out
 
 
 def bracket_ends(d, Ft, Fn, length, span_rel=1e-11):

@@ -98,8 +98,50 @@ class Integrator:
                 dT.append((k + 2) * t)
         return Th, dT, S, C
 
-    def segment(self, th, p, S0, C0, L, Fn, Ft, c, invEI, h0, track):
-        """Integrate over signed length L (fixed ints). Returns th, p, S, C, last step, signs list."""
+    def _height_step(self, S, C, H, Fn, Ft, c, hz):
+        """Carry the height z over one step (hz: dict with the fixed-point z and the float zmin).
+        dz/ds = -(1 + c T) cos(theta), T = Ft sin(theta) - Fn cos(theta) (validation/verify.py's
+        convention: theta from the substrate normal, z = 0 at the contact edge); from the step's
+        series of sin and cos, D_k = scaled coefficients of dz/ds, z(t H) = z0 + H sum D_k t^(k+1)/(k+1).
+        The lowest z is taken at 16 points of the step, the step's end among them, and refined by a
+        golden-section search of the step's polynomial between the neighbours of the lowest one."""
+        P = self.P
+        n = len(C)
+        D = []
+        for k in range(n):
+            d = C[k]
+            if c:
+                acc = 0
+                for j in range(k + 1):
+                    acc += ((Ft * S[j] - Fn * C[j]) >> P) * C[k - j]
+                d += (c * (acc >> P)) >> P
+            D.append(-d)
+        z0 = hz["z"]
+        Hf = H / float(1 << P) if P < 1000 else math.ldexp(H >> (P - 64), -64)
+        Df = [x / float(1 << P) if P < 1000 else math.ldexp(x >> (P - 64), -64) for x in D]
+        z0f = z0 / float(1 << P) if P < 1000 else math.ldexp(z0 >> (P - 64), -64)
+        def zf(t):
+            acc = 0.0
+            for k in range(n - 1, -1, -1):
+                acc = acc * t + Df[k] / (k + 1)
+            return z0f + Hf * t * acc
+
+        vals = [zf(m / 16.0) for m in range(17)]
+        m = min(range(17), key=vals.__getitem__)
+        lo, hi = max(0, m - 1) / 16.0, min(16, m + 1) / 16.0
+        g = (math.sqrt(5) - 1) / 2
+        for _ in range(40):
+            a, b = hi - g * (hi - lo), lo + g * (hi - lo)
+            if zf(a) < zf(b):
+                hi = b
+            else:
+                lo = a
+        hz["zmin"] = min(hz["zmin"], vals[m], zf((lo + hi) / 2))
+        hz["z"] = z0 + ((H * sum(D[k] // (k + 1) for k in range(n))) >> P)
+
+    def segment(self, th, p, S0, C0, L, Fn, Ft, c, invEI, h0, track, heights=None):
+        """Integrate over signed length L (fixed ints). Returns th, p, S, C, last step, signs list.
+        heights: None, or a dict carrying the height z and its lowest value (_height_step)."""
         P, K = self.P, self.K
         rem = L
         sgn = 1 if L > 0 else -1
@@ -135,6 +177,8 @@ class Integrator:
                     val = acc / hf
                     thf = sum(x * tau ** kk for kk, x in enumerate([fl(y) for y in Th[:12]]))
                     track.append((val, thf))
+            if heights is not None:
+                self._height_step(S, C, H, Fn, Ft, c, heights)
             th = sum(Th)
             p = (sum(dT) << P) // H
             S0 = sum(S)
@@ -172,9 +216,10 @@ def _count(track):
     return n, angles
 
 
-def shoot_back(d, Fn, Ft, I=None, track=False, kap=None):
-    """d: design with mpf values. Returns dict(theta10, theta1p0, beta, [turn info]).
-    kap overrides theta2'(a) (used at Ft = (Ft)max where it is exactly 0)."""
+def shoot_back(d, Fn, Ft, I=None, track=False, kap=None, heights=False):
+    """d: design with mpf values. Returns dict(theta10, theta1p0, beta, [turn info], [min_z]).
+    kap overrides theta2'(a) (used at Ft = (Ft)max where it is exactly 0). heights: also the lowest
+    height of the seta over [0, a] (min_z, 0 at the contact edge; Integrator._height_step)."""
     I = I or Integrator()
     with mp.workprec(I.mprec):
         Fn, Ft = mpf(Fn), mpf(Ft)
@@ -184,7 +229,8 @@ def shoot_back(d, Fn, Ft, I=None, track=False, kap=None):
         p = I.fix(kappa(d, Ft) if kap is None else kap)
         S, C = 1 << I.P, 0
         tr2 = [] if track else None
-        th, p, S, C, h = I.segment(th, p, S, C, -l2, f["Fn"], f["Ft"], f["c2"], f["i2"], I.fix(0.125), tr2)
+        hz = dict(z=0, zmin=0.0) if heights else None
+        th, p, S, C, h = I.segment(th, p, S, C, -l2, f["Fn"], f["Ft"], f["c2"], f["i2"], I.fix(0.125), tr2, hz)
         beta = th
         # joint: theta1 = theta2 - alpha2, EI1 theta1' = EI2 theta2'
         a2 = mpf(d["alpha2"])
@@ -193,8 +239,10 @@ def shoot_back(d, Fn, Ft, I=None, track=False, kap=None):
         th = th - I.fix(a2)
         p = I.fix(I.unfix(p) * d["EI2"] / d["EI1"])
         tr1 = [] if track else None
-        th, p, S, C, h = I.segment(th, p, S, C, -l1, f["Fn"], f["Ft"], f["c1"], f["i1"], I.fix(0.125), tr1)
+        th, p, S, C, h = I.segment(th, p, S, C, -l1, f["Fn"], f["Ft"], f["c1"], f["i1"], I.fix(0.125), tr1, hz)
         out = dict(theta10=I.unfix(th), theta1p0=I.unfix(p), beta=I.unfix(beta))
+        if heights:
+            out["min_z"] = hz["zmin"]
         if track:
             # tracks are recorded from s = a downwards; reverse so they run with s
             n2, ang2 = _count(tr2[::-1])

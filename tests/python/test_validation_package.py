@@ -236,6 +236,36 @@ def test_admissibility_shot_confirms_min_z_and_flags_injected_errors():
     assert r["unchecked"][0].tolist() == [True, True, False]
     assert r["unchecked_above"][0].tolist() == [True, False, False]
     assert r["unchecked_crossing"][0].tolist() == [False, True, False]
+    assert not r["wrong_by_sign"].any()
+
+
+def test_admissibility_sign_decided_where_the_shot_is_not_conclusive(monkeypatch):
+    # A deep crossing of a beam hundreds of elastic lengths long leaves the shot's uncertainty far
+    # above TOL / 10 (campaign design 9557 at Ft = -7338.6: shot -0.353 +- 6e-4 of L), so the
+    # conclusive test cannot judge it; its sign is certain, and a status 0 there is silently wrong.
+    from validation import admissibility, campaign
+    s = gecko.TwoLevelSeta()
+    P = np.array([[getattr(s, f) for f in campaign.FIELDS]], dtype=float)
+    L = s.l1 + s.l2
+    shot = np.array([-0.35, -0.35, 0.0, 0.0, -2e-3]) * L
+    unc = np.array([6e-4, 6e-4, 6e-4, 6e-4, 6e-4]) * L
+    monkeypatch.setattr(admissibility.verify, "heights", lambda d, Ft, Fn: (shot.copy(), unc.copy()))
+    ft = np.zeros((1, 5))
+    Fn = np.ones((1, 5))
+    status = np.array([[0, 7, 0, 7, 0]])
+    min_z = np.array([[0.0, -0.39 * L, 0.0, -0.2 * L, 0.0]])
+    r = admissibility.check(P, ft, Fn, status, min_z)
+    assert not r["conclusive"].any() and not r["wrong"].any()
+    # certain crossing called admissible; a crossing called crossing; the edge at 0 (sign not
+    # certain above -1e-12 L by 10 u) is not judged; a 7 whose shot is within 10 u of 0 is not
+    # judged either; -2e-3 L with u = 6e-4 L is not certain by ten times u
+    assert r["wrong_admissible_by_sign"][0].tolist() == [True, False, False, False, False]
+    assert not r["wrong_inadmissible_by_sign"].any()
+    assert r["sign_decided"][0].tolist() == [True, True, False, False, False]
+    shot[2:4] = 0.1 * L  # certainly above the substrate: a 7 there is wrong, a 0 right
+    r = admissibility.check(P, ft, Fn, status, min_z)
+    assert r["wrong_inadmissible_by_sign"][0].tolist() == [False, False, False, True, False]
+    assert r["wrong_by_sign"][0].tolist() == [True, False, False, True, False]
 
 
 def test_changed_compares_lowest_heights_of_states_both_solved():
@@ -333,3 +363,25 @@ def test_bracket_route_proves_a_root_and_refuses_an_injected_error():
     assert not ssm.bracket_ends(d, 5.0, Fn * (1 + 1e-9), L)["sign_change"]
     # extensible: the saddle's time constant counts 1 + N/EA
     assert ssm.saddle_lengths(dict(d, EA1=2.0), 6.0)[0] == pytest.approx(math.sqrt(6.0 * 4.0 / d["EI1"]))
+
+
+def test_admissibility_mp_heights_agree_and_verdicts_flag_injected_errors():
+    # validation/admissibility_mp.py: the arbitrary-precision bracketing shot carries the height; on
+    # the reference design with alpha2 = 1 (crossing near (Ft)max) its lowest height is gecko's
+    # min_z, and the verdict rule flags a crossing called admissible and an admissible state called
+    # crossing.
+    pytest.importorskip("mpmath")
+    from validation import admissibility_mp, campaign
+    s = gecko.TwoLevelSeta(alpha2=1.0)
+    fts = np.array([5.0, 9.9, 9.999])
+    line = s.critical_line(Ft=fts)
+    P = np.array([getattr(s, f) for f in campaign.FIELDS], dtype=float)
+    for j in (0, 2):
+        r = admissibility_mp.check((0, j, P, fts, float(line.min_z[j]), 60))
+        assert r["verdict"] == "correct", r
+        assert abs(r["shot_min_z"] - float(line.min_z[j])) <= 1e-12
+    assert r["shot_min_z"] < -1e-3 and r["status"] == 7
+    L = s.l1 + s.l2
+    assert admissibility_mp.verdict(0, 0.0, r["shot_min_z"], L) == "wrong"
+    assert admissibility_mp.verdict(7, -0.01, 0.0, L) == "wrong"
+    assert admissibility_mp.verdict(7, r["shot_min_z"] + 1e-6, r["shot_min_z"], L) == "differs"
