@@ -108,6 +108,14 @@ CASES = [
                               l1=1.0, l2=0.40457611073471206, alpha1=1.0384787826742332,
                               alpha2=0.08361018232993746, w=1.0),
      [0.0, 2354.1102792027564, 977.5472359614504, 2272.8681639357587, 2522.883661968692]),
+    # campaign design 7498 at its Ft >= 0: at Ft = 1204.43, 1647.95 and 1829.23 the long-double
+    # retry's march in the separatrix limit stalled while it solved each step to the state tolerance;
+    # solved since it marches at the line's corrector tolerance and solves the targets to the state's
+    # (gecko/seta/detail/separatrix_extend.hpp)
+    ("ld_march_7498", dict(EI1=7.146342192897248, EI2=26.421606639568665, EA1=132922.89136859676,
+                           EA2=1676388.069185779, l1=1.0, l2=0.002700768250546619, alpha1=0.11378581360818,
+                           alpha2=1.171091789828089, w=1.0),
+     [0.0, 507.751025979041, 1204.4298422874951, 1647.9528731371422, 1829.2276891822278], "bracket"),
 ]
 AGREE = 1e-20
 

@@ -160,7 +160,11 @@ inline void critical_line_at_imp(const TwoLevelSeta<T>& s, const T* Ft, std::siz
       return;
     }
     evaluate_line(sys, line, Ft, which.size(), which.data(), opt.tolerance, out);
-    extend_on_separatrix(sys, line, scale, Ft, which.size(), which.data(), opt.tolerance, out);
+    // A type wider than double marches in the separatrix limit at the line's tolerance and solves
+    // the targets to the state's (separatrix_extend.hpp says why not in double).
+    const bool wide = std::numeric_limits<T>::digits > std::numeric_limits<double>::digits;
+    extend_on_separatrix(sys, line, scale, Ft, which.size(), which.data(), opt.tolerance, out,
+                         wide ? opt.line_tolerance : T(0));
   };
   if (!pos.empty()) run(pos, hi);
   if (!neg.empty()) run(neg, lo);

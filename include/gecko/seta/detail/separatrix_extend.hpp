@@ -21,10 +21,19 @@ namespace detail {
 // in mu from the line's last node, each target's state accepted where separatrix_state_exact holds.
 // A line whose corrector failed at its first step (a natural state found on the separatrix,
 // detail/natural_state.hpp) is marched from that state, towards its targets.
+// march_tol (where above tol): the tolerance of the march's own steps; each target's state is
+// solved to tol from the marched one all the same (separatrix_target_state). critical_line_at passes
+// the line's corrector tolerance in a type wider than double (the long-double retry of give-ups,
+// critical_line.hpp): there a march solved to the state tolerance stalled, or did not start, before
+// targets that it now reaches and solves (validation/README.md, "The march at the line's tolerance
+// in long double"). In double it passes none: a march at 1e-10 there, tried, lost states that the
+// march at 1e-12 solves and left one 3.2e-11 off along the limit system's ill-conditioned direction
+// ("Lines that never leave their start, and rounding floors").
 template <class T, class Policy, bool E1, bool E2>
 inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
                                  const traced_line<seta_system<T, Policy, E1, E2>>& line, T scale, const T* Ft,
-                                 std::size_t count, const std::size_t* which, T tol, critical_state<T>* out) {
+                                 std::size_t count, const std::size_t* which, T tol, critical_state<T>* out,
+                                 T march_tol = T(0)) {
   using std::fabs;
   using vec = typename seta_system<T, Policy, E1, E2>::vec;
   if (!(line.end == line_end::stalled || line.end == line_end::no_convergence) || line.nodes.empty()) return;
@@ -59,7 +68,8 @@ inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
   vec z = last.z;
   seta_plan plan = lim.plan(z, mu0);
   int its = 0;
-  if (!solve_separatrix(lim, z, mu0, plan, tol, its)) return;
+  const T mtol = march_tol > tol ? march_tol : tol;
+  if (!solve_separatrix(lim, z, mu0, plan, mtol, its)) return;
   // March in mu: secant predictor, the step grown after a success and halved after a failure.
   T mu = mu0, h = T(0.01) * scale;
   vec z_prev = z;
@@ -74,7 +84,7 @@ inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
     if (mu != mu_prev) zt += (z - z_prev) * ((mu_try - mu) / (mu - mu_prev));
     seta_plan pt = plan;
     int it = 0;
-    const bool ok = solve_separatrix(lim, zt, mu_try, pt, tol, it) &&
+    const bool ok = solve_separatrix(lim, zt, mu_try, pt, mtol, it) &&
                     lim.step_norm(zt - z, z) <= T(0.5) + 4 * fabs(mu_try - mu) / scale;
     its += it;
     if (!ok) {
@@ -94,7 +104,7 @@ inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
     if (grown != mask) {
       mask = lim.mask = grown;
       plan = lim.plan(z, mu);
-      if (!solve_separatrix(lim, z, mu, plan, tol, its)) break;
+      if (!solve_separatrix(lim, z, mu, plan, mtol, its)) break;
     }
     while (next < targets.size() && mu == mu0 + dir * targets[next].first) {
       const std::size_t i = targets[next].second;
