@@ -25,7 +25,7 @@ is the state's to far below the threshold. Verdicts, with L = l1 + l2 and TOL = 
 - undecided: no sign change over the bracket, an error, or the time limit.
 
     PYTHONPATH=<gecko> python3 -m validation.admissibility_mp now.npz [--sample 60] [--seed 0] \\
-        [--min-length 15] [--max-length 120] [--time-limit 120] [--flagged] [--json out.json]
+        [--min-length 15] [--max-length 120] [--time-limit 120] [--flagged] [--states D:C ...] [--json out.json]
 """
 from __future__ import annotations
 
@@ -123,6 +123,8 @@ def main(argv=None):
     ap.add_argument("--time-limit", type=float, default=120, help="seconds per state (0: none)")
     ap.add_argument("--flagged", action="store_true",
                     help="sample only the deep states that validation/admissibility.py's double shot calls wrong")
+    ap.add_argument("--states", nargs="*", default=None, metavar="DESIGN:COLUMN",
+                    help="check these states instead of a sample")
     ap.add_argument("--json", default=None)
     a = ap.parse_args(argv)
     z = dict(np.load(a.npz))
@@ -134,11 +136,13 @@ def main(argv=None):
         only = np.full(z["status"].shape, 2)  # status 2: not shot
         only[idx[:, 0], idx[:, 1]] = z["status"][idx[:, 0], idx[:, 1]]
         r = admissibility.check(z["P"][rows], z["FT"][rows], z["Fn"][rows], only[rows], z["min_z"][rows], a.workers)
-        bad = r["wrong"] | r["wrong_by_sign"]
+        bad = r["wrong"] | r["flagged_by_sign"]
         idx = np.array([(rows[k], j) for k, j in np.argwhere(bad)], dtype=np.int64).reshape(-1, 2)
         flagged_by_double = int(len(idx))
     rng = np.random.default_rng(a.seed)
     pick = idx[rng.choice(len(idx), size=min(a.sample, len(idx)), replace=False)] if len(idx) else idx
+    if a.states is not None:
+        pick = np.array([[int(x) for x in st.split(":")] for st in a.states], dtype=np.int64).reshape(-1, 2)
     jobs = [(int(i), int(j), z["P"][i], z["FT"][i], float(z["min_z"][i, j]), a.time_limit) for i, j in pick]
     t0 = time.time()
     with mpc.get_context("fork").Pool(a.workers) as pool:

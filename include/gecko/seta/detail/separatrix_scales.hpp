@@ -36,13 +36,19 @@ constexpr int separatrix_unresolved_exponent = -40;
 // as it has more digits (long double on x86: 11, to 2^-47 and 2^-51), with delta again 2^-16
 // relative there. The long-double retry of give-ups (critical_line.hpp) measures its limit segments
 // there: the law's extrapolation from the measured lengths to the segment's is that much shorter.
+// A type no wider than double keeps double's.
+template <class T>
+constexpr int separatrix_extra_digits() {
+  constexpr int extra = std::numeric_limits<T>::digits - std::numeric_limits<double>::digits;
+  return extra > 0 ? extra : 0;
+}
 template <class T>
 constexpr int separatrix_resolved_exponent_of() {
-  return separatrix_resolved_exponent - (std::numeric_limits<T>::digits > 53 ? std::numeric_limits<T>::digits - 53 : 0);
+  return separatrix_resolved_exponent - separatrix_extra_digits<T>();
 }
 template <class T>
 constexpr int separatrix_unresolved_exponent_of() {
-  return separatrix_unresolved_exponent - (std::numeric_limits<T>::digits > 53 ? std::numeric_limits<T>::digits - 53 : 0);
+  return separatrix_unresolved_exponent - separatrix_extra_digits<T>();
 }
 
 }  // namespace detail
