@@ -38,12 +38,10 @@ import time
 import numpy as np
 
 from validation import campaign
+from validation.admissibility import GECKO_CROSSING_REL, TOL_REL
 from validation.separatrix import TimeLimit, time_limited
 
 # tests/data (seta_separatrix_mp, seta_taylor) is on sys.path through validation.separatrix.
-
-TOL_REL = 1e-9               # of l1 + l2, as validation/admissibility.py
-GECKO_CROSSING_REL = 1e-12   # gecko's own threshold for status 7 (gecko/seta/admissibility.hpp)
 
 
 def verdict(status: int, min_z: float, shot: float, L: float) -> str:
@@ -100,13 +98,12 @@ def check(job):
 def deep_states(npz: dict, min_length: float, max_length: float) -> np.ndarray:
     """(design, column) of the solved states whose longer segment is within [min_length, max_length]
     saddle time constants (and the two together at most 2 max_length: the shot's cost)."""
+    import seta_separatrix_mp as ssm
+
     P, FT, Fn, status = npz["P"], npz["FT"], npz["Fn"], npz["status"]
-    c = lambda EA: np.where(np.isinf(EA), 0.0, 1.0 / EA)  # noqa: E731
     f = {k: P[:, n][:, None] for n, k in enumerate(campaign.FIELDS)}
     with np.errstate(invalid="ignore"):
-        N = np.hypot(Fn, FT)
-        L1 = f["l1"] * np.sqrt(N * (1 + c(f["EA1"]) * N) / f["EI1"])
-        L2 = f["l2"] * np.sqrt(N * (1 + c(f["EA2"]) * N) / f["EI2"])
+        L1, L2 = ssm.saddle_lengths(f, np.hypot(Fn, FT))
         longer = np.maximum(L1, L2)
         ok = campaign.solved(status) & (longer >= min_length) & (longer <= max_length) & (L1 + L2 <= 2 * max_length)
     return np.argwhere(ok)

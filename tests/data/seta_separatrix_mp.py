@@ -204,10 +204,11 @@ def shoot_route(d, Ft, Fn0, q0, bits=224):
 def saddle_lengths(d, N):
     """Each segment's length in units of its saddle's time constant, l sqrt(N (1 + N/EA) / EI)
     (gecko/seta/detail/separatrix_limit.hpp, separatrix_measures): delta ~ exp(-that), and a shot
-    through the segment amplifies its start's error by about as much."""
+    through the segment amplifies its start's error by about as much. Elementwise for numpy arrays
+    of designs and N as well (validation/admissibility_mp.py picks its deep states with it)."""
     def one(l, EI, EA):
-        c = 0.0 if math.isinf(EA) else 1.0 / EA
-        return l * math.sqrt(N * (1 + c * N) / EI)
+        c = 1.0 / EA  # 0 for EA = inf
+        return l * (N * (1 + c * N) / EI) ** 0.5
     return one(d["l1"], d["EI1"], d["EA1"]), one(d["l2"], d["EI2"], d["EA2"])
 
 

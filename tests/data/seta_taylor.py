@@ -65,6 +65,12 @@ class Integrator:
     def unfix(self, i):
         return mpf((i, -self.P))
 
+    def to_float(self, x):
+        """A fixed-point int as a float; past P = 1000 by a shift first (1 << P itself overflows a
+        float)."""
+        P = self.P
+        return x / float(1 << P) if P < 1000 else math.ldexp(x >> (P - 64), -64)
+
     def _coeffs(self, th, p, S0, C0, H, Fn, Ft, c, invEI):
         """Scaled Taylor coefficients Th_k = theta_k H^k, S_k H^k, C_k H^k, k = 0..K."""
         P, K = self.P, self.K
@@ -107,19 +113,20 @@ class Integrator:
         golden-section search of the step's polynomial between the neighbours of the lowest one."""
         P = self.P
         n = len(C)
+        V = [(Ft * S[j] - Fn * C[j]) >> P for j in range(n)] if c else None  # the axial force T
         D = []
         for k in range(n):
             d = C[k]
             if c:
                 acc = 0
                 for j in range(k + 1):
-                    acc += ((Ft * S[j] - Fn * C[j]) >> P) * C[k - j]
+                    acc += V[j] * C[k - j]
                 d += (c * (acc >> P)) >> P
             D.append(-d)
         z0 = hz["z"]
-        Hf = H / float(1 << P) if P < 1000 else math.ldexp(H >> (P - 64), -64)
-        Df = [x / float(1 << P) if P < 1000 else math.ldexp(x >> (P - 64), -64) for x in D]
-        z0f = z0 / float(1 << P) if P < 1000 else math.ldexp(z0 >> (P - 64), -64)
+        Hf, z0f = self.to_float(H), self.to_float(z0)
+        Df = [self.to_float(x) for x in D]
+
         def zf(t):
             acc = 0.0
             for k in range(n - 1, -1, -1):
@@ -146,11 +153,7 @@ class Integrator:
         rem = L
         sgn = 1 if L > 0 else -1
         H = sgn * min(abs(h0), abs(L))
-        # fixed point -> float; past P = 1000 by a shift first (1 << P itself overflows a float)
-        fP = float(1 << P) if P < 1000 else None
-
-        def fl(x):
-            return x / fP if fP is not None else math.ldexp(x >> (P - 64), -64)
+        fl = self.to_float
 
         if track is not None:
             track.append((fl(p), fl(th)))     # the segment's first point (a joint or an end)
