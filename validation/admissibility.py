@@ -44,6 +44,19 @@ TOL_REL = 1e-9          # of l1 + l2
 GECKO_CROSSING_REL = 1e-12   # gecko's own threshold for status 7 (gecko/seta/admissibility.hpp)
 
 
+def wrong_verdicts(status, min_z, shot, L):
+    """The verdicts a lowest height ``shot`` (of an independent route, its own error below TOL)
+    contradicts, elementwise: (status 0 while the shot lies below -TOL, status 7 with gecko's
+    min_z below -TOL while the shot stays above -1e-12 L). The one statement of the rule, for the
+    double shot here and the arbitrary-precision one of admissibility_mp.py."""
+    status, min_z, shot, L = map(np.asarray, (status, min_z, shot, L))
+    tol = TOL_REL * L
+    with np.errstate(invalid="ignore"):
+        wrong0 = (status == 0) & (shot < -tol)
+        wrong7 = (status == campaign.INADMISSIBLE) & (min_z < -tol) & (shot > -GECKO_CROSSING_REL * L)
+    return wrong0, wrong7
+
+
 def _shot_heights(args):
     P, FT, Fn = args
     return verify.heights(campaign.design_dict(P), FT, Fn)
@@ -70,8 +83,8 @@ def check(P, FT, Fn, status, min_z, workers=1) -> dict:
     tol = TOL_REL * L
     conclusive = campaign.solved(status) & (unc < 0.1 * tol)
     with np.errstate(invalid="ignore"):
-        wrong0 = conclusive & (status == 0) & (v < -tol)
-        wrong7 = conclusive & (status == campaign.INADMISSIBLE) & (min_z < -tol) & (v > -GECKO_CROSSING_REL * L)
+        wrong0, wrong7 = wrong_verdicts(status, min_z, v, L)
+        wrong0, wrong7 = conclusive & wrong0, conclusive & wrong7
         certain_crossing = ~conclusive & (v + 10 * unc < -tol)
         certain_above = ~conclusive & (v - 10 * unc > -GECKO_CROSSING_REL * L)
         sign0 = campaign.solved(status) & (status == 0) & certain_crossing

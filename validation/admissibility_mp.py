@@ -38,7 +38,7 @@ import time
 import numpy as np
 
 from validation import campaign
-from validation.admissibility import GECKO_CROSSING_REL, TOL_REL
+from validation.admissibility import TOL_REL, wrong_verdicts
 from validation.separatrix import TimeLimit, time_limited
 
 # tests/data (seta_separatrix_mp, seta_taylor) is on sys.path through validation.separatrix.
@@ -46,12 +46,10 @@ from validation.separatrix import TimeLimit, time_limited
 
 def verdict(status: int, min_z: float, shot: float, L: float) -> str:
     """The verdict on gecko's status and min_z against the shot's lowest height (module docstring)."""
-    tol = TOL_REL * L
-    if status == 0 and shot < -tol:
+    wrong0, wrong7 = wrong_verdicts(status, min_z, shot, L)
+    if wrong0 or wrong7:
         return "wrong"
-    if status == campaign.INADMISSIBLE and min_z < -tol and shot >= -GECKO_CROSSING_REL * L:
-        return "wrong"
-    if math.isfinite(min_z) and abs(min_z - shot) > tol:
+    if math.isfinite(min_z) and abs(min_z - shot) > TOL_REL * L:
         return "differs"
     return "correct"
 

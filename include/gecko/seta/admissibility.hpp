@@ -40,8 +40,12 @@
 //     decomposition (to 1e-9 of the seta's length). Next to a separatrix (the turning angle close to the saddle
 //     psi = pi/2) the length is too sensitive to the first integral's constant M for M formed from
 //     the state's rates; there the turning angle is solved from the length instead and accepted
-//     when the M it implies is the state's to 1e-10 (calibrate_near_saddle). If neither closes,
-//     the check reports itself as not made (min_z = NaN). A beam that stays monotone (theta in
+//     when the M it implies is the state's to 1e-10 (calibrate_near_saddle); a segment tens of
+//     elastic lengths long, which neither M nor the turning angle resolves, is walked past the
+//     saddle (walk_past_saddle), and so is one whose M puts it at or past its separatrix in
+//     rounding while the solver counts turning points on it (its turning angle is then the
+//     saddle's, in theta's range too). If none closes, the check reports itself as not made
+//     (min_z = NaN). A beam that stays monotone (theta in
 //     [-pi/2, pi/2], stretch positive) while the spatula does not is not walked: its lowest point
 //     is the joint. Each quadrature node costs one sincos (height_gl_chi, height_gl).
 //     The minimum over the candidates is exact up to the quadrature tolerance: no sampling in s.
@@ -754,17 +758,31 @@ inline admissibility_result<T> admissibility_general(const seta_params<T>& d, co
   theta_range<T> r1{d.alpha1, d.alpha1, u_base, u_base}, r2{beta, beta, ub, ub};
   r1.track(th_j1, v);
   r2.track(half_pi, cphi);
+  // A segment whose M, formed from the state's rates, puts it at or past its separatrix (up >= 1 in
+  // rounding) while the solver counts turning points on it lies on the separatrix within the
+  // state's accuracy: its turning angle is the saddle (psi_top = pi/2, set_turning_angle), which it
+  // approaches as closely as a segment tens of elastic lengths long does (walk_past_saddle). Leaving
+  // the angle out instead made the range that of the ends, and the verdict flip between 0 and
+  // -0.4 l1 with the state's last bits (design 9557 of the 10,000-design re-run; tests/seta/
+  // admissibility.cpp). Without a first integral (up NaN) the range is unknown: the walk decides,
+  // and fails.
   auto turning_range = [&](const height_segment<T>& g, T th_s, T rate_s, int n, theta_range<T>& rg) {
     using std::floor;
-    if (n <= 0 || !(g.up < 1)) return;
+    if (n <= 0) return;
+    if (!(g.up == g.up)) {
+      rg.track(-std::numeric_limits<T>::infinity(), g.up);
+      rg.track(std::numeric_limits<T>::infinity(), g.up);
+      return;
+    }
+    const T up = g.up < 1 ? g.up : T(1);
     const T pi = seta_pi<T>();
     const T k = floor((th_s - g.phi + pi / 2) / (2 * pi) + T(0.5));
     const T tmax = g.phi + g.psi_top + k * 2 * pi, tmin = g.phi - pi - g.psi_top + k * 2 * pi;
     if (n >= 2) {
-      rg.track(tmax, g.up);
-      rg.track(tmin, g.up);
+      rg.track(tmax, up);
+      rg.track(tmin, up);
     } else {
-      rg.track(rate_s > 0 ? tmax : tmin, g.up);
+      rg.track(rate_s > 0 ? tmax : tmin, up);
     }
   };
   turning_range(g1, d.alpha1, q, n1, r1);
