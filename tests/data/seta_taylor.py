@@ -93,16 +93,21 @@ class Integrator:
             if k <= K - 2:
                 U.append((Fn * S[k] + Ft * C[k]) >> P)
                 V.append((Ft * S[k] - Fn * C[k]) >> P)
-                W = U[k]
-                if c:
-                    uv = 0
-                    for j in range(k + 1):
-                        uv += U[j] * V[k - j]
-                    W += (c * (uv >> P)) >> P
+                W = U[k] + self._stretch_term(U, V, k, c)
                 t = -(((q * W) >> P) // ((k + 1) * (k + 2)))
                 Th.append(t)
                 dT.append((k + 2) * t)
         return Th, dT, S, C
+
+    def _stretch_term(self, A, B, k, c):
+        """The k-th coefficient of c A B (fixed point; 0 for an inextensible segment, c = 0): the
+        axial stretch's share of a series multiplied by (1 + c T)."""
+        if not c:
+            return 0
+        acc = 0
+        for j in range(k + 1):
+            acc += A[j] * B[k - j]
+        return (c * (acc >> self.P)) >> self.P
 
     def _height_step(self, S, C, H, Fn, Ft, c, hz):
         """Carry the height z over one step (hz: dict with the fixed-point z and the float zmin).
@@ -116,13 +121,7 @@ class Integrator:
         V = [(Ft * S[j] - Fn * C[j]) >> P for j in range(n)] if c else None  # the axial force T
         D = []
         for k in range(n):
-            d = C[k]
-            if c:
-                acc = 0
-                for j in range(k + 1):
-                    acc += V[j] * C[k - j]
-                d += (c * (acc >> P)) >> P
-            D.append(-d)
+            D.append(-(C[k] + self._stretch_term(V, C, k, c)))
         z0 = hz["z"]
         Hf, z0f = self.to_float(H), self.to_float(z0)
         Df = [self.to_float(x) for x in D]
