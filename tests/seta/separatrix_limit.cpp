@@ -223,6 +223,99 @@ TEST_CASE("the separatrix correction refuses a state it cannot certify", "[seta]
   }
 }
 
+TEST_CASE("the march keeps to the limit state whose ends a path joins", "[seta][separatrix]") {
+  // Campaign design 4 (mirror_4 of the reference table): past its stall the beam's joint end lies
+  // 1.4e-3 to 1.6e-3 rad short of the saddle's orientation. The limit system sees the joint only
+  // through sin(psi), even about the saddle, so it also has a mirror solution with the joint as far
+  // past it. The march had jumped onto the mirror at Ft = 1484.6, and every target beyond was
+  // refused (status 6). Both solve the limit system; only the followed one has a path joining its
+  // ends. (The table has no rows of these states: the bracketing shot's root agrees with them in
+  // Fn to 3.4e-13 but counts 3 beam turning points where gecko has 1, along the beam's dwell.)
+  const auto s = reference_design("mirror_4");
+  using System = gecko::detail::seta_system<double, gecko::policies::default_policy, true, true>;
+  using Limit = gecko::detail::separatrix_system<double, gecko::policies::default_policy, true, true>;
+  const System sys(gecko::detail::make_seta_params(s));
+  const std::vector<double> Ft{0.0, 2973.778736877619, 3242.789375309997, 3439.8812489588895, 3818.268186344367};
+  const auto got = gecko::critical_line_at(s, Ft);
+  const double half_pi = std::acos(-1.0) / 2;
+  for (std::size_t k = 1; k < Ft.size(); ++k) {
+    const auto& st = got[k];
+    INFO("Ft " << Ft[k] << " status " << static_cast<int>(st.status));
+    REQUIRE((st.status == gecko::critical_status::converged || st.status == gecko::critical_status::inadmissible));
+    const double mu = sys.mu_of(Ft[k]);
+    const Limit lim{sys, gecko::detail::limit_beam | gecko::detail::limit_spatula};
+    // The joint end's angle from the beam's saddle, psi = pi/2.
+    auto joint_from_saddle = [&](const System::vec& z) {
+      double FtS, edge;
+      sys.forces(mu, FtS, edge);
+      const auto g = gecko::detail::make_seta_geometry<true, true>(sys.d, z[0], z[1], z[2], z[3], FtS, edge, true);
+      return g.psi_e1 - half_pi;
+    };
+    // Both limit states solved to 1e-10 (the long-double march's tolerance): from the exact state at
+    // Ft = 3818.27 the limit system's Newton in double does not reach 1e-12.
+    auto z = sys.from_guess(st.Fn, st.theta_joint, st.theta_rate_joint, st.theta_rate_base, Ft[k]);
+    auto plan = lim.plan(z, mu);
+    int its = 0;
+    REQUIRE(gecko::detail::solve_separatrix(lim, z, mu, plan, 1e-10, its));
+    const double x = joint_from_saddle(z);
+    CHECK(x < -1e-3);
+    CHECK(x > -2e-3);
+    CHECK(gecko::detail::limit_ends_joined(lim, z, mu));
+    // The mirror: beta moved by -2x puts the joint end as far past the saddle.
+    auto zm = z;
+    zm[1] -= 2 * x;
+    auto plan_m = lim.plan(zm, mu);
+    REQUIRE(gecko::detail::solve_separatrix(lim, zm, mu, plan_m, 1e-10, its));
+    const double xm = joint_from_saddle(zm);
+    CHECK(xm > 0.5 * std::fabs(x));
+    CHECK(xm < 2 * std::fabs(x));
+    CHECK(std::fabs(zm[1] - z[1]) > std::fabs(x));
+    CHECK(zm[2] * z[2] > 0);  // the joint rate keeps its sign: the mirror is no passage of the saddle
+    CHECK_FALSE(gecko::detail::limit_ends_joined(lim, zm, mu));
+    int expected[2] = {st.turning_points_beam, st.turning_points_spatula}, turning[2];
+    CHECK_FALSE(gecko::detail::separatrix_state_exact(lim, zm, mu, plan_m, 1e-12, expected, turning));
+  }
+}
+
+TEST_CASE("the march keeps a free rate's sign through its end's saddle, as the traced line does", "[seta][separatrix]") {
+  // Campaign design 161 (keep_sign_161 of the reference table): in double the followed line stalls
+  // at Ft = 1398.4 with the beam's base just short of its saddle's orientation and theta1'(0) < 0.
+  // The limit system leaves theta1'(0) free in sign (it enters squared); the march had landed on
+  // the other sign at its first step (another path, a loop apart), and at the base's saddle
+  // carried it through zero to ends that no path joins, reaching states with theta1'(0) < 0 and 2
+  // beam turning points at Ft = 5485.91 and 6089.36. The same line traced in long double, by the
+  // full system alone, passes the saddle with theta1'(0) going from negative to positive and keeps
+  // it positive to where it ends; the march now does too (keep_ends_joined). The first test case
+  // checks those states against their references.
+  if (std::numeric_limits<long double>::digits <= std::numeric_limits<double>::digits) {
+    WARN("long double is no wider than double here: no traced line to compare with");
+    return;
+  }
+  const auto s = reference_design("keep_sign_161");
+  const gecko::TwoLevelSeta<long double> sl{s.EI1, s.EI2, s.EA1, s.EA2, s.l1, s.l2, s.alpha1, s.alpha2, s.w};
+  gecko::critical_line_options<long double> o;
+  o.ft_end = 6090;  // below (Ft)max = 6095.46
+  const auto traced = gecko::critical_line(sl, o);
+  REQUIRE(traced.points.size() > 2);
+  const auto& last = traced.points.back();
+  CHECK(last.Ft > 3000);  // well past the base's saddle (Ft = 1398.6)
+  for (const auto& pt : traced.points) {
+    INFO("traced Ft " << static_cast<double>(pt.Ft));
+    if (pt.Ft < 1390) CHECK(pt.theta_rate_base < 0);
+    if (pt.Ft > 1410) CHECK(pt.theta_rate_base > 0);
+  }
+  // In double, at the traced line's last Ft (the retry in long double, or the march) and beyond (the march).
+  const auto got = gecko::critical_line_at(
+      s, std::vector<double>{static_cast<double>(last.Ft), 5485.909656607731, 6089.359718834582});
+  for (const auto& st : got) {
+    INFO("Ft " << st.Ft << " status " << static_cast<int>(st.status));
+    REQUIRE((st.status == gecko::critical_status::converged || st.status == gecko::critical_status::inadmissible));
+    CHECK(st.theta_rate_base > 0);
+  }
+  CHECK(std::fabs(got[0].Fn - static_cast<double>(last.Fn)) <= 1e-11 * std::fabs(got[0].Fn));
+  CHECK(got[0].turning_points_beam == last.turning_points_beam);
+}
+
 TEST_CASE("no design derivatives where the state does not resolve its separatrix distance", "[seta][separatrix]") {
   const auto s = design_27();
   const auto d = gecko::sensitivities(s, std::vector<double>{100.0, 1000.0});

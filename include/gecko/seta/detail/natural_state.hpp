@@ -172,6 +172,7 @@ inline bool natural_state_on_separatrix(const seta_system<T, Policy, E1, E2>& sy
   T lengths[2], gaps[2];
   int expected[2];
   int mask;
+  bool joined;  // as in extend_on_separatrix: the ends stay joined (keep_ends_joined)
   vec zc = stall.z;
   {
     const Sys hs = path.at(sys, stall.lambda);
@@ -182,6 +183,7 @@ inline bool natural_state_on_separatrix(const seta_system<T, Policy, E1, E2>& sy
     const Lim lim{hs, mask};
     seta_plan p = lim.plan(zc, T(0));
     if (!solve_separatrix(lim, zc, T(0), p, tol, iterations)) return false;
+    joined = limit_ends_joined(lim, zc, T(0));
   }
   // March in lambda: secant predictor, the step grown after a success and halved after a failure;
   // the state grows about like lambda (eq 18), so a step may move it by about its relative share.
@@ -196,7 +198,8 @@ inline bool natural_state_on_separatrix(const seta_system<T, Policy, E1, E2>& sy
     seta_plan pt = lim.plan(zt, T(0));
     int its = 0;
     const bool ok = solve_separatrix(lim, zt, T(0), pt, tol, its) &&
-                    lim.step_norm(zt - zc, zc) <= T(0.5) + 4 * (lt - lam) / lam;
+                    lim.step_norm(zt - zc, zc) <= T(0.5) + 4 * (lt - lam) / lam &&
+                    (!joined || keep_ends_joined(lim, zc, zt, T(0)));
     iterations += its;
     if (!ok) {
       h /= 2;
@@ -211,6 +214,7 @@ inline bool natural_state_on_separatrix(const seta_system<T, Policy, E1, E2>& sy
     // a segment that has come next to its separatrix on the way joins the limit ones
     separatrix_measures(ht, zc, T(0), lengths, gaps);
     mask |= separatrix_mask(lengths, gaps);
+    joined = limit_ends_joined(Lim{ht, mask}, zc, T(0));
   }
   if (lam < 1) return false;
   critical_state<T> r;

@@ -71,6 +71,10 @@ inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
   const T mtol = march_tol > tol ? march_tol : tol;
   if (!solve_separatrix(lim, z, mu0, plan, mtol, its)) return;
   // March in mu: secant predictor, the step grown after a success and halved after a failure.
+  // A state whose ends a path joins stays so: a free rate's sign is kept through its zero, and a
+  // step to ends that none joins otherwise has jumped to the limit system's mirror solution and is
+  // retried shorter (keep_ends_joined).
+  bool joined = limit_ends_joined(lim, z, mu0);
   T mu = mu0, h = T(0.01) * scale;
   vec z_prev = z;
   T mu_prev = mu0;
@@ -85,7 +89,8 @@ inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
     seta_plan pt = plan;
     int it = 0;
     const bool ok = solve_separatrix(lim, zt, mu_try, pt, mtol, it) &&
-                    lim.step_norm(zt - z, z) <= T(0.5) + 4 * fabs(mu_try - mu) / scale;
+                    lim.step_norm(zt - z, z) <= T(0.5) + 4 * fabs(mu_try - mu) / scale &&
+                    (!joined || keep_ends_joined(lim, z, zt, mu_try));
     its += it;
     if (!ok) {
       h /= 2;
@@ -106,6 +111,7 @@ inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
       plan = lim.plan(z, mu);
       if (!solve_separatrix(lim, z, mu, plan, mtol, its)) break;
     }
+    joined = limit_ends_joined(lim, z, mu);
     while (next < targets.size() && mu == mu0 + dir * targets[next].first) {
       const std::size_t i = targets[next].second;
       critical_state<T> r;

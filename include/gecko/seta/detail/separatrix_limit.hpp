@@ -181,6 +181,81 @@ inline bool segment_beside_separatrix(T EI, T c, T N, T psi_s, T sign_s, T psi_e
   return true;
 }
 
+// Whether every limit segment of `lim` at the state z has a path next to its separatrix, on
+// either side, that joins the state's ends with their rate signs (segment_beside_separatrix at the
+// first measuring distance). The limit system sees a beam's joint end only through v = sin(psi)
+// at the joint, even about the saddle psi = pi/2 (and its rate only squared), so next to the saddle
+// it has a mirror solution, the joint end as far past the saddle as it was short of it, beta moved
+// by about twice that, and the other equations nearly unchanged; no path joins the mirror's ends
+// (a libration cannot pass the saddle and come back, a rotation keeps its rate's sign). A march
+// step to such a state is the march jumping to the mirror, not the line: campaign design 4, marched
+// in Ft from the stall at 621.4, jumped at Ft = 1484.6 from the joint 2.4e-3 rad short of the saddle
+// to 2.2e-3 past it, with theta1'(l1) < 0 on both sides, and every target beyond was refused
+// (validation/README.md, "The march's mirror jump, and free rate signs through a saddle").
+template <class T, class Policy, bool E1, bool E2>
+inline bool limit_ends_joined(const separatrix_system<T, Policy, E1, E2>& lim,
+                              const typename seta_system<T, Policy, E1, E2>::vec& z, T mu) {
+  const auto& d = lim.base.d;
+  T Ft, edge;
+  lim.base.forces(mu, Ft, edge);
+  const auto g = make_seta_geometry<E1, E2>(d, z[0], z[1], z[2], z[3], Ft, edge, true);
+  auto joined = [&](const auto& c, auto E, T EI, T cc, T ps, T X3s, T pe, T X3e) {
+    constexpr bool Ext = decltype(E)::value;
+    const T da = std::ldexp(std::fabs(c.M) + c.N, separatrix_resolved_exponent_of<T>());
+    const T ss = X3s >= 0 ? T(1) : T(-1), se = X3e >= 0 ? T(1) : T(-1);
+    for (T side : {T(1), T(-1)}) {
+      T length;
+      int turning;
+      if (segment_beside_separatrix<Policy, Ext>(EI, cc, c.N, ps, ss, pe, se, side * da, length, turning)) return true;
+    }
+    return false;
+  };
+  if ((lim.mask & limit_beam) && !joined(g.beam, std::integral_constant<bool, E1>(), d.EI1, d.c1, g.psi_s1,
+                                         g.X3_s1, g.psi_e1, g.X3_e1))
+    return false;
+  if ((lim.mask & limit_spatula) && !joined(g.spatula, std::integral_constant<bool, E2>(), d.EI2, d.c2, g.psi_s2,
+                                            g.X3_s2, g.psi_e2, g.X3_e2))
+    return false;
+  return true;
+}
+
+// A march step of the limit system from z (ends joined) to zt at mu: true, with zt possibly
+// changed, where zt's ends are joined (limit_ends_joined). The limit system leaves the sign of a
+// rate free where it enters only squared: the base rate q with the beam a limit segment (F4 =
+// q^2 - R1; its sign served only the beam's length equation), and the joint rate p as well with
+// both segments limit segments. The two signs are two paths, a loop apart, with Fn and beta the
+// same to O(delta). Where the rate's end passes its saddle's orientation the smooth continuation
+// carries such a rate through zero with the end's angle, and on one of the two paths that leads
+// to ends no path joins; a free rate that changed sign over the step is then given back its sign,
+// which joins them. (Campaign design 161: the march's first step from the stall had landed on the
+// other sign of theta1'(0) than the line's last node, and at the base's saddle, Ft = 1398.6, it
+// carried theta1'(0) through zero to ends that nothing joins, and on to states with 2 beam turning
+// points. Given back its sign, it is the line traced in long double by the full system alone:
+// theta1'(0) > 0 past the saddle.) Keeping a free rate's sign at every step where the ends allow
+// it was tried and not kept: it lost 68 states of the campaign re-run and moved 72
+// (validation/README.md, "The march's mirror jump, and free rate signs through a saddle").
+// False where no sign joins the ends: the step has jumped to the limit system's mirror
+// (limit_ends_joined), and the march retries it shorter.
+template <class T, class Policy, bool E1, bool E2>
+inline bool keep_ends_joined(const separatrix_system<T, Policy, E1, E2>& lim,
+                             const typename seta_system<T, Policy, E1, E2>::vec& z,
+                             typename seta_system<T, Policy, E1, E2>::vec& zt, T mu) {
+  if (limit_ends_joined(lim, zt, mu)) return true;
+  const bool q_free = (lim.mask & limit_beam) != 0, p_free = lim.mask == (limit_beam | limit_spatula);
+  const bool q_changed = q_free && z[3] * zt[3] < 0, p_changed = p_free && z[2] * zt[2] < 0;
+  for (int restore = 1; restore < 4; ++restore) {  // q, p, both given back their sign
+    if (((restore & 1) && !q_changed) || ((restore & 2) && !p_changed)) continue;
+    auto zf = zt;
+    if (restore & 1) zf[3] = -zf[3];
+    if (restore & 2) zf[2] = -zf[2];
+    if (limit_ends_joined(lim, zf, mu)) {
+      zt = zf;
+      return true;
+    }
+  }
+  return false;
+}
+
 // The length in units of the saddle's time constant, l / tau = l sqrt(N (1 + c N) / EI), and the
 // relative separatrix distance R(1)/(|M| + N) of both segments at a state of the full system.
 // The time constant, not sqrt(EI/N): delta shrinks like exp(-l / tau), and for an extensible
