@@ -24,8 +24,8 @@ the bracketing shot confirms gecko's state (0 turning points) to 1.6e-13.
 Sampled: states whose campaign status was 1 or 6 (given up) and that the re-run solves (0 or 7);
 with ``--since OLD.npz`` (an earlier re-run's ``recheck --save`` file) only those that OLD had not
 solved either, i.e. the states a solver change newly recovers; with ``--moved OLD.npz`` instead the
-states both solve with Fn more than 1e-10 apart (relative) or with other turning points, i.e. the
-states a solver change moved (the re-run's, that is the gecko on PYTHONPATH, are checked). A state the route cannot settle in
+states both solve with Fn more than 1e-10 apart (relative), i.e. the states a solver change moved
+(the re-run's, that is the gecko on PYTHONPATH, are checked). A state the route cannot settle in
 ``--time-limit`` seconds (300 by default) counts as undecided.
 """
 from __future__ import annotations
@@ -164,8 +164,7 @@ def main(argv=None):
     ap.add_argument("--since", default=None, help="sample only states this earlier re-run (.npz) gave up on")
     ap.add_argument("--moved", default=None,
                     help="sample instead the states this earlier re-run (.npz) solved too (0 or 7), with Fn more "
-                         "than 1e-10 (relative) from the re-run's or other turning points: a solver change's "
-                         "moved states")
+                         "than 1e-10 (relative) from the re-run's: a solver change's moved states")
     ap.add_argument("--time-limit", type=float, default=300,
                     help="seconds per state before it counts as undecided (0: none)")
     a = ap.parse_args(argv)
@@ -179,7 +178,7 @@ def main(argv=None):
         solved = np.isin(old["status"], (0, 7)) & np.isin(now["status"], (0, 7))
         with np.errstate(invalid="ignore"):
             rel = np.abs(old["Fn"] - now["Fn"]) / np.maximum(1.0, np.abs(old["Fn"]))
-        given_up = solved & ((rel > 1e-10) | (old["tpb"] != now["tpb"]) | (old["tps"] != now["tps"]))
+        given_up = solved & (rel > 1e-10)
     idx = np.argwhere(given_up)
     rng = np.random.default_rng(a.seed)
     pick = idx[rng.choice(len(idx), size=min(a.sample, len(idx)), replace=False)]
