@@ -213,8 +213,9 @@ inline bool natural_state_on_separatrix(const seta_system<T, Policy, E1, E2>& sy
     h = std::min(h * T(1.5), T(0.08));
     // a segment that has come next to its separatrix on the way joins the limit ones
     separatrix_measures(ht, zc, T(0), lengths, gaps);
-    mask |= separatrix_mask(lengths, gaps);
-    joined = limit_ends_joined(Lim{ht, mask}, zc, T(0));
+    const int grown = mask | separatrix_mask(lengths, gaps);
+    if (grown != mask || !joined) joined = limit_ends_joined(Lim{ht, grown}, zc, T(0));  // else kept joined
+    mask = grown;
   }
   if (lam < 1) return false;
   critical_state<T> r;

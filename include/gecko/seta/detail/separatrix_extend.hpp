@@ -106,12 +106,16 @@ inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
     // A segment that has come next to its separatrix on the way joins the limit ones.
     separatrix_measures(sys, z, mu, lengths, gaps);
     const int grown = mask | separatrix_mask(lengths, gaps);
+    // A joined step stays joined (keep_ends_joined checked it); a new limit segment, or a march
+    // not yet joined, is checked afresh.
     if (grown != mask) {
       mask = lim.mask = grown;
       plan = lim.plan(z, mu);
       if (!solve_separatrix(lim, z, mu, plan, mtol, its)) break;
+      joined = limit_ends_joined(lim, z, mu);
+    } else if (!joined) {
+      joined = limit_ends_joined(lim, z, mu);
     }
-    joined = limit_ends_joined(lim, z, mu);
     while (next < targets.size() && mu == mu0 + dir * targets[next].first) {
       const std::size_t i = targets[next].second;
       critical_state<T> r;
