@@ -138,6 +138,23 @@ CASES = [
                            EA2=18577286.88917405, l1=1.0, l2=0.0032156233172321263, alpha1=1.1796087523064642,
                            alpha2=0.3203384356322046, w=1.0),
      [0.0, 1868.976729507951, 5485.909656607731, 6089.359718834582], "bracket"),
+    # campaign design 1298 at its Ft >= 0: the march in Ft from the stall (Ft = 2480.5, the beam on its
+    # separatrix) collapsed at Ft = 2588.6, in double and in the long-double retry, where Newton in
+    # Ft no longer converges on the limit system; the retry's march goes on in arclength
+    # (gecko/seta/detail/separatrix_arclength.hpp) and reaches the three targets beyond, given up
+    # before (status 6)
+    ("arclength_1298", dict(EI1=36.245267076835034, EI2=78.07600430546631, EA1=537.0914253154813,
+                            EA2=8367569.608136437, l1=1.0, l2=0.007244529394974517, alpha1=0.93690330178437,
+                            alpha2=0.4760023971554903, w=1.0),
+     [0.0, 2766.188288194081, 3681.7744044388473, 4086.7695889271204], "bracket"),
+    # campaign design 3486 at its Ft < 0: the march in Ft collapsed at Ft = -35.06 at a fold of the
+    # line in Ft; the long-double retry's march in arclength passes it and a second fold (Ft = -24.8), and first crosses
+    # Ft = -35.1 and the campaign's -42.44 after that (the beam 110 saddle time constants long at
+    # -42.44), given up before (status 6)
+    ("arclength_fold_3486", dict(EI1=0.11546095077417291, EI2=16.247827063242536, EA1=2939.689102634065,
+                                 EA2=1175.383240544916, l1=1.0, l2=0.015299552565151316,
+                                 alpha1=1.4289756157007119, alpha2=0.13038104532825864, w=1.0),
+     [0.0, -35.1, -42.44250662834663]),
 ]
 AGREE = 1e-20
 

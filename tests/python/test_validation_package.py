@@ -387,3 +387,28 @@ def test_admissibility_mp_heights_agree_and_verdicts_flag_injected_errors():
     assert admissibility_mp.verdict(0, 0.0, r["shot_min_z"], L) == "wrong"
     assert admissibility_mp.verdict(7, -0.01, 0.0, L) == "wrong"
     assert admissibility_mp.verdict(7, r["shot_min_z"] + 1e-6, r["shot_min_z"], L) == "differs"
+
+
+def test_folds_bisection_brackets_the_fold_and_refuses_other_statuses():
+    # validation/folds.py finds a fold's Ft from gecko's statuses alone: solved (0 or 7) short of
+    # it, 2 or 6 past it. A seta stand-in with a known fold at Ft = -3.25 (and, in the second, a
+    # stretch of status 3 on the way) checks the bracket and the refusal.
+    from validation import folds
+
+    class Line:
+        def __init__(self, st):
+            self.status = np.array([st])
+
+    class Folded:
+        def __init__(self, fold, other=None):
+            self.fold, self.other = fold, other
+
+        def critical_line(self, Ft, errors):
+            x = Ft[0]
+            if self.other is not None and self.other[0] <= x <= self.other[1]:
+                return Line(3)
+            return Line(7 if x > self.fold else 6)
+
+    lo, hi = folds.fold_ft(Folded(-3.25), -10.0)
+    assert hi < -3.25 < lo and lo - hi < 10.0 / 2**29
+    assert folds.fold_ft(Folded(-3.25, other=(-6.0, -4.0)), -10.0) is None

@@ -316,6 +316,60 @@ TEST_CASE("the march keeps a free rate's sign through its end's saddle, as the t
   CHECK(got[0].turning_points_beam == last.turning_points_beam);
 }
 
+TEST_CASE("the march goes on in arclength where its steps in Ft collapse", "[seta][separatrix]") {
+  // Campaign design 1298 (arclength_1298 of the reference table, whose values the first test case
+  // checks): the followed line stalls at Ft = 2480.5 with the beam on its separatrix; the march in
+  // Ft on the limit system collapsed at Ft = 2588.6, where Newton in Ft no longer converges, in
+  // double and in the long-double retry, and the three targets beyond were status 6. The retry's
+  // march now goes on in arclength from there.
+  const auto s = reference_design("arclength_1298");
+  const std::vector<double> Ft{0.0, 2766.188288194081, 3681.7744044388473, 4086.7695889271204};
+  gecko::critical_line_options<double> o;
+  o.ft_end = Ft.back();
+  const auto line = gecko::critical_line(s, o);
+  CHECK(line.end == gecko::line_end::stalled);
+  CHECK(line.points.back().Ft < 2500);
+  const auto got = gecko::critical_line_at(s, Ft);
+  for (const auto& st : got) {
+    INFO("Ft " << st.Ft << " status " << static_cast<int>(st.status));
+    CHECK((st.status == gecko::critical_status::converged || st.status == gecko::critical_status::inadmissible));
+  }
+}
+
+TEST_CASE("the march in arclength passes folds of the line in Ft", "[seta][separatrix]") {
+  // Campaign design 3486 (arclength_fold_3486 of the reference table, whose values the first test
+  // case checks): towards negative Ft the march in Ft collapsed at a fold of the line, Ft = -35.06
+  // (Fn = 15.2 there); in arclength (the long-double retry) the line turns back to Ft = -24.8
+  // (Fn = 313 there), folds again, and then first crosses Ft = -35.1 and -42.44, both status 6
+  // before. Their states lie past the second fold, not next to the first.
+  const auto s = reference_design("arclength_fold_3486");
+  const auto got = gecko::critical_line_at(s, std::vector<double>{-30.0, -35.1, -42.44250662834663});
+  for (const auto& st : got) {
+    INFO("Ft " << st.Ft << " status " << static_cast<int>(st.status));
+    REQUIRE((st.status == gecko::critical_status::converged || st.status == gecko::critical_status::inadmissible));
+  }
+  CHECK(got[0].Fn < 15.2);  // before the first fold, on the first branch
+  CHECK(got[1].Fn > 313);
+  CHECK(got[2].Fn > got[1].Fn);
+}
+
+TEST_CASE("a march that comes back over the line's start after a fold stops, and claims nothing", "[seta][separatrix]") {
+  // Campaign design 148 towards negative Ft: the march on the beam's separatrix meets a fold at
+  // Ft = -539.834 and, in arclength (the long-double retry), comes back over Ft = 0. The forces
+  // beyond the fold stay not reached (status 6), not "no critical state": past such folds the
+  // arbitrary-precision shot found sign changes near the folded branch at three of six
+  // (validation/README.md, "The separatrix march in arclength"). Short of the fold the state is
+  // the march's in Ft.
+  const gecko::TwoLevelSeta<double> s{2.174062353116032, 94.20809833552384, 232.92834007754806, 5564848.126082358,
+                                      1.0, 0.9597805066145328, 0.2843851990750305, 0.09955851484454228, 1.0};
+  const auto got = gecko::critical_line_at(s, std::vector<double>{-539.8, -539.9, -2751.7530609210785});
+  INFO("statuses " << static_cast<int>(got[0].status) << " " << static_cast<int>(got[1].status) << " "
+                   << static_cast<int>(got[2].status));
+  CHECK((got[0].status == gecko::critical_status::converged || got[0].status == gecko::critical_status::inadmissible));
+  CHECK(got[1].status == gecko::critical_status::not_reached);
+  CHECK(got[2].status == gecko::critical_status::not_reached);
+}
+
 TEST_CASE("no design derivatives where the state does not resolve its separatrix distance", "[seta][separatrix]") {
   const auto s = design_27();
   const auto d = gecko::sensitivities(s, std::vector<double>{100.0, 1000.0});

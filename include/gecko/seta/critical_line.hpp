@@ -79,7 +79,8 @@ inline void critical_line_at_imp(const TwoLevelSeta<T>& s, const T* Ft, std::siz
 // Newton step of the separatrix limit system stops shrinking at 1e-12 to 1e-9 of the state, above
 // the tolerance (validation/README.md, "Lines that never leave their start, and rounding
 // floors"); 11 more bits lower that floor, below the tolerance for two give-ups in five of the
-// 10,000-design re-run (validation/README.md, "Give-ups retried in long double"). Only a converged
+// 10,000-design re-run (validation/README.md, "Give-ups retried in long double"). The retry's march
+// goes on in arclength where its steps in Ft collapse (separatrix_arclength.hpp). Only a converged
 // or inadmissible answer replaces the double one: any other status of the retry leaves the give-up
 // as it was. States solved in double are not touched.
 template <class Policy, bool E1, bool E2>
@@ -161,10 +162,11 @@ inline void critical_line_at_imp(const TwoLevelSeta<T>& s, const T* Ft, std::siz
     }
     evaluate_line(sys, line, Ft, which.size(), which.data(), opt.tolerance, out);
     // A type wider than double marches in the separatrix limit at the line's tolerance and solves
-    // the targets to the state's (separatrix_extend.hpp says why not in double).
+    // the targets to the state's (separatrix_extend.hpp says why not in double), and goes on in
+    // arclength where its steps in Ft collapse (separatrix_arclength.hpp says why only there).
     const bool wide = std::numeric_limits<T>::digits > std::numeric_limits<double>::digits;
     extend_on_separatrix(sys, line, scale, Ft, which.size(), which.data(), opt.tolerance, out,
-                         wide ? opt.line_tolerance : T(0));
+                         wide ? opt.line_tolerance : T(0), wide);
   };
   if (!pos.empty()) run(pos, hi);
   if (!neg.empty()) run(neg, lo);

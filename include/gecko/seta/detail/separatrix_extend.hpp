@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "gecko/seta/detail/line_trace.hpp"
+#include "gecko/seta/detail/separatrix_arclength.hpp"
 #include "gecko/seta/detail/separatrix_limit.hpp"
 
 namespace gecko {
@@ -29,11 +30,13 @@ namespace detail {
 // in long double"). In double it passes none: a march at 1e-10 there, tried, lost states that the
 // march at 1e-12 solves and left one 3.2e-11 off along the limit system's ill-conditioned direction
 // ("Lines that never leave their start, and rounding floors").
+// arclength: where the steps in Ft collapse, go on in arclength (detail/separatrix_arclength.hpp);
+// critical_line_at asks for it in the long-double retry only.
 template <class T, class Policy, bool E1, bool E2>
 inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
                                  const traced_line<seta_system<T, Policy, E1, E2>>& line, T scale, const T* Ft,
                                  std::size_t count, const std::size_t* which, T tol, critical_state<T>* out,
-                                 T march_tol = T(0)) {
+                                 T march_tol = T(0), bool arclength = false) {
   using std::fabs;
   using vec = typename seta_system<T, Policy, E1, E2>::vec;
   if (!(line.end == line_end::stalled || line.end == line_end::no_convergence) || line.nodes.empty()) return;
@@ -80,6 +83,7 @@ inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
   T mu_prev = mu0;
   const T h_min = T(1e-9) * scale, h_max = T(0.08) * scale;
   std::size_t next = 0;
+  bool collapsed = false;
   for (int step = 0; step < 4000 && next < targets.size(); ++step) {
     const T goal = mu0 + dir * targets[next].first;
     const T mu_try = fabs(goal - mu) <= h ? goal : mu + dir * h;
@@ -94,7 +98,10 @@ inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
     its += it;
     if (!ok) {
       h /= 2;
-      if (h < h_min) break;
+      if (h < h_min) {
+        collapsed = true;
+        break;
+      }
       continue;
     }
     z_prev = z;
@@ -122,6 +129,13 @@ inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
       if (separatrix_target_state(lim, z, mu, Ft[i], tol, expected, its, r)) out[i] = r;
       ++next;
     }
+  }
+  // Steps in Ft collapsed (a fold of the line in Ft, or a point the limit system cannot be solved
+  // at by Newton in Ft): go on in arclength where asked (detail/separatrix_arclength.hpp).
+  if (arclength && collapsed && next < targets.size()) {
+    limit_march<T, Policy, E1, E2> m{lim, z, z_prev, mu, mu_prev, plan, joined};
+    march_limit_in_arclength(sys, m, last.tangent, mu0, dir, line.nodes.front().Ft, scale, mtol, tol, targets, next,
+                             Ft, expected, out);
   }
 }
 

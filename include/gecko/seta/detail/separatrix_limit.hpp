@@ -67,7 +67,7 @@ inline S separatrix_gap(const segment_constants<S, E>& g) {
 
 // The critical-state equations with the length equation of each segment in `mask` replaced by
 // its separatrix condition delta = 0 (scaled to a length: l delta / (|M| + N)). A System for
-// newton_fixed_ft; the plans of the limit segments are ignored.
+// newton_fixed_ft and for the arclength corrector; the plans of the limit segments are ignored.
 template <class T, class Policy, bool E1, bool E2>
 struct separatrix_system {
   using base_type = seta_system<T, Policy, E1, E2>;
@@ -104,8 +104,22 @@ struct separatrix_system {
     F[3] = g.F4;
   }
 
+  // F, dF/dz and (if dF_dmu) dF/dmu at (z, mu): the derivative in mu for the march in arclength
+  // (detail/separatrix_arclength.hpp).
   bool eval(const vec& z, T mu, const plan_type& plan, vec& F, mat& J, vec* dF_dmu, T u14[2]) const {
-    (void)dF_dmu;  // not used by newton_fixed_ft
+    if (dF_dmu) {
+      using S = dual<T, 5>;
+      S r[4], Ft, edge;
+      base.forces(S::variable(mu, 4), Ft, edge);
+      residual_of<S>(S::variable(z[0], 0), S::variable(z[1], 1), S::variable(z[2], 2), S::variable(z[3], 3), Ft,
+                     edge, plan, r, u14);
+      for (int i = 0; i < 4; ++i) {
+        F[i] = r[i].v;
+        for (int j = 0; j < 4; ++j) J(i, j) = r[i].d[j];
+        (*dF_dmu)[i] = r[i].d[4];
+      }
+      return F.allFinite() && J.allFinite() && dF_dmu->allFinite();
+    }
     using S = dual<T, 4>;
     S r[4];
     T Ft, edge;

@@ -1,0 +1,166 @@
+"""The folds behind "turned back" claims, checked in arbitrary precision (issue 13, item 5).
+
+The long-double retry's separatrix march goes on in arclength where its steps in Ft collapse
+(gecko/seta/detail/separatrix_arclength.hpp). Where it comes back over the line's start after a
+fold, the forces beyond the fold get status 2 (no critical state on the line). This script checks
+the fold itself, with no gecko code in the check:
+
+1. The fold's Ft from gecko's answers alone: bisection between the line's start (Ft = 0) and the
+   claimed Ft on "solved (0 or 7)" against "not solved (2, or 6 since the march stops there
+   instead, see below)", 30 halvings of the interval (any other status on the way: undecided).
+2. Just short of the fold (by eta = 1e-3 of the scale max(1, |Ft_fold|) towards the start), gecko's
+   state there is confirmed by the bracketing shot in arbitrary precision
+   (tests/data/seta_separatrix_mp.bracket_route): a root of the base mismatch
+   g(Fn) = theta1(0) - alpha1 within 1e-11 of its Fn.
+3. Just past the fold (by eta), the same shot on a grid of Fn around that state's Fn (41 points,
+   +-5 % of max(1, |Fn|)) must keep one sign: no critical state near the branch that folded.
+
+Verdicts: ``fold_confirmed`` (2 and 3 hold), ``root_past_fold`` (3 fails: a sign change past the
+fold near the branch, so the line may go on there and the claim is in doubt), ``undecided``
+(bisection met another status, the shot found no root at gecko's state, or the time limit).
+That the line, past the fold, comes back over its start is gecko's march alone; this check
+establishes the fold it turned at.
+
+The claims were made by a build whose march gave the targets beyond such a fold status 2; at three
+of the first six checked the shot found sign changes past the fold, and the march now stops there
+and leaves them status 6 (validation/README.md, "The separatrix march in arclength"). The states
+of a results file are checked again with ``--redo`` (the bisection takes status 6 beyond the fold
+as it took 2):
+
+    PYTHONPATH=python:. python3 -m validation.folds NEW.npz --since OLD.npz --sample 6 --seed 0 \\
+        --json validation/results/folds_sample.json          (claims: status 2 in NEW, 1 or 6 in OLD)
+    PYTHONPATH=python:. python3 -m validation.folds --redo validation/results/folds_sample.json \\
+        --json validation/results/folds_redo.json
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import sys
+import time
+
+import numpy as np
+
+from validation import campaign
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "tests", "data"))
+
+from validation.separatrix import TimeLimit, time_limited  # noqa: E402
+
+
+def fold_ft(seta, Ft_claim, halvings=30):
+    """The fold's Ft between 0 and Ft_claim by bisection on gecko's status, or None."""
+    lo, hi = 0.0, float(Ft_claim)
+    for _ in range(halvings):
+        mid = 0.5 * (lo + hi)
+        st = int(seta.critical_line(Ft=[mid], errors="nan").status[0])
+        if st in (0, 7):
+            lo = mid
+        elif st in (2, 6):
+            hi = mid
+        else:
+            return None
+    return lo, hi
+
+
+def check(d, Ft_claim, limit):
+    import gecko
+    from mpmath import mp, mpf
+    import seta_separatrix_mp as ssm
+
+    out = dict(Ft=float(Ft_claim))
+    t = time.time()
+    seta = gecko.TwoLevelSeta(**d)
+    b = fold_ft(seta, Ft_claim)
+    if b is None:
+        out["verdict"] = "undecided"
+        out["why"] = "bisection met a status other than 0, 7, 2 or 6"
+        return out
+    lo, hi = b
+    scale = max(1.0, abs(hi))
+    eta = 1e-3 * scale
+    sgn = 1.0 if Ft_claim > 0 else -1.0
+    before, past = lo - sgn * eta, hi + sgn * eta
+    line = seta.critical_line(Ft=[before], errors="nan")
+    Fn = float(line.Fn[0])
+    out.update(fold=[lo, hi], Ft_before=before, Ft_past=past, Fn_before=Fn)
+    if int(line.status[0]) not in (0, 7):
+        out["verdict"] = "undecided"
+        out["why"] = "no state short of the fold"
+        return out
+    L1, L2 = ssm.saddle_lengths(d, math.hypot(Fn, before))
+    out["elastic_lengths"] = [round(L1, 1), round(L2, 1)]
+    try:
+        r = time_limited(limit, ssm.bracket_route, d, before, Fn, L1 + L2)
+        if r is None:
+            out["verdict"] = "undecided"
+            out["why"] = "the bracketing shot has no root at gecko's state short of the fold"
+            return out
+        out["before_dFn_rel"] = float(abs(r["Fn"] - Fn) / max(1, abs(Fn)))
+        shoot, _, _, _ = ssm._bracket(d, past, Fn, L1 + L2, 1e-11)
+        span = 0.05 * max(1.0, abs(Fn))
+        signs = []
+        with mp.workprec(shoot.prec):
+            for k in range(41):
+                x = mpf(Fn) - span + 2 * span * k / mpf(40)
+                g = time_limited(limit, shoot, x)[0]
+                signs.append(1 if g > 0 else (-1 if g < 0 else 0))
+        out["past_sign_changes"] = sum(1 for a, c in zip(signs, signs[1:]) if a != c)
+    except TimeLimit:
+        out["verdict"] = "undecided"
+        out["why"] = f"time limit ({limit} s)"
+        return out
+    out["seconds"] = round(time.time() - t, 1)
+    out["verdict"] = "fold_confirmed" if out["past_sign_changes"] == 0 else "root_past_fold"
+    return out
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("npz", nargs="?")
+    ap.add_argument("--since", default=None, help="the earlier re-run (.npz) that gave these states up")
+    ap.add_argument("--redo", default=None, help="check the states of an earlier results file again")
+    ap.add_argument("--sample", type=int, default=6)
+    ap.add_argument("--seed", type=int, default=0)
+    ap.add_argument("--time-limit", type=float, default=120.0)
+    ap.add_argument("--json", default=None)
+    a = ap.parse_args(argv)
+    if a.redo:
+        with open(a.redo) as f:
+            earlier = json.load(f)
+        jobs = [(s["design"], s["Ft"]) for s in earlier["states"]]
+        designs = np.load(earlier["npz"])["P"]  # the campaign's designs, the same in every re-run file
+        claims_count = earlier["claims"]
+        a.npz = earlier["npz"]
+    else:
+        new, old = np.load(a.npz), np.load(a.since)
+        claims = (new["status"] == 2) & np.isin(old["status"], (1, 6))
+        idx = np.argwhere(claims)
+        rng = np.random.default_rng(a.seed)
+        pick = idx[rng.choice(len(idx), size=min(a.sample, len(idx)), replace=False)] if len(idx) else idx
+        jobs = [(int(i), float(new["FT"][i, j])) for i, j in pick]
+        designs = new["P"]
+        claims_count = int(claims.sum())
+    t0 = time.time()
+    states, verdicts = [], {}
+    for i, Ft in jobs:
+        d = dict(zip(campaign.FIELDS, map(float, designs[i])))
+        r = check(d, Ft, a.time_limit)
+        r["design"] = int(i)
+        states.append(r)
+        verdicts[r["verdict"]] = verdicts.get(r["verdict"], 0) + 1
+        print(json.dumps(r), flush=True)
+    summary = dict(npz=a.npz, since=a.since, redo=a.redo, claims=claims_count, sample=len(states), seed=a.seed,
+                   time_limit=a.time_limit, verdicts=verdicts, seconds=round(time.time() - t0, 1), states=states)
+    text = json.dumps(summary, indent=1)
+    if a.json:
+        with open(a.json, "w") as f:
+            f.write(text + "\n")
+    print(json.dumps({k: v for k, v in summary.items() if k != "states"}, indent=1))
+
+
+if __name__ == "__main__":
+    main()
