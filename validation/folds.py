@@ -16,8 +16,10 @@ the fold itself, with no gecko code in the check:
    +-5 % of max(1, |Fn|)) must keep one sign: no critical state near the branch that folded.
 
 Verdicts: ``fold_confirmed`` (2 and 3 hold), ``root_past_fold`` (3 fails: a sign change past the
-fold near the branch, so the line may go on there and the claim is in doubt), ``undecided``
-(bisection met another status, the shot found no root at gecko's state, or the time limit).
+fold near the branch, a root or a jump of the shot, which this count does not tell apart as
+validation/claims.py's refine does; so the line may go on there and the claim is in doubt),
+``undecided`` (bisection met another status, the shot found no root at gecko's state, or the time
+limit).
 That the line, past the fold, comes back over its start is gecko's march alone; this check
 establishes the fold it turned at.
 
