@@ -6,7 +6,8 @@ shooting route (validation/verify.py) to 1e-8 max(1,|Fn|) in Fn and 1e-8 in beta
 verifier is conclusive), or reported unsolved (status != 0) with NaN Fn and beta.
 kind = bounded_time: the solver must answer (any status) within 20 s.
 kind = natural_unsupported: a design whose every homotopy path to the natural state leaves the
-model's forms: status 3 everywhere, confirmed at Ft by the independent scan of validation/claims.py.
+model's forms (or, where every route fails in long double, one of them does): status 3 everywhere,
+confirmed at Ft by the independent scan of validation/claims.py.
 kind = not_reached: a design whose followed line crawls (step collapse) and used to report the Ft it
 had not reached as status 2 "no critical state" after 10^5 nodes: now status 0 (verified as above)
 or 6 "not reached" (never 2), within 20 s.
@@ -94,6 +95,8 @@ def test_natural_state_beyond_the_forms_is_unsupported(row):
     inside the model's forms at Ft = 0."""
     from validation import claims
 
+    if "long double" in row["note"] and np.finfo(np.longdouble).nmant <= np.finfo(np.float64).nmant:
+        pytest.skip("decided by the long-double retry, and long double is no wider than double here")
     s = gecko.TwoLevelSeta(**_design(row))
     line = s.critical_line(errors="nan")
     assert line.end_code == gecko.LineEnd.unsupported_state and len(line.Ft) == 0

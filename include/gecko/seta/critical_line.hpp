@@ -39,6 +39,35 @@ namespace gecko {
 
 namespace detail {
 
+// Where double's homotopy to the natural state gave up (status 1), the natural state decided again
+// in long double where that is wider, as critical_line_at's retry decides it: unsupported_state
+// where every route there failed and one ran into the edge of the model's forms
+// (detail/natural_state.hpp), so that the traced line and the characteristics report what the
+// states at given Ft report. A natural state that only long double finds is not followed here
+// (the traced line is double's): not_converged, as before.
+template <class Policy, bool E1, bool E2, class T>
+inline critical_status natural_state_decided_wider(const TwoLevelSeta<T>& s, T strain_limit) {
+  if constexpr (std::is_same<T, double>::value &&
+                std::numeric_limits<long double>::digits > std::numeric_limits<double>::digits) {
+    using L = long double;
+    const TwoLevelSeta<L> sl{L(s.EI1), L(s.EI2), L(s.EA1), L(s.EA2), L(s.l1), L(s.l2), L(s.alpha1), L(s.alpha2), L(s.w)};
+    const seta_system<L, Policy, E1, E2> sys(make_seta_params(sl), L(strain_limit));
+    typename seta_system<L, Policy, E1, E2>::vec z;
+    seta_plan plan;
+    int its = 0;
+    // As in the retry, an error raised on a path double did not take decides nothing.
+    try {
+      if (natural_state(sys, z, plan, its) == critical_status::unsupported_state)
+        return critical_status::unsupported_state;
+    } catch (const std::exception&) {
+    }
+  } else {
+    (void)s;
+    (void)strain_limit;
+  }
+  return critical_status::not_converged;
+}
+
 template <class Policy, bool E1, bool E2, class T>
 inline critical_line_result<T> critical_line_imp(const TwoLevelSeta<T>& s, const critical_line_options<T>& opt) {
   using System = seta_system<T, Policy, E1, E2>;
@@ -50,7 +79,12 @@ inline critical_line_result<T> critical_line_imp(const TwoLevelSeta<T>& s, const
   typename System::plan_type plan0;
   critical_line_result<T> r;
   traced_line<System> line;
-  trace(sys, end, scale, opt, 0, z0, plan0, r.natural, line);
+  if (!trace(sys, end, scale, opt, 0, z0, plan0, r.natural, line) &&
+      r.natural.status == critical_status::not_converged &&
+      natural_state_decided_wider<Policy, E1, E2>(s, opt.strain_limit) == critical_status::unsupported_state) {
+    r.natural.status = critical_status::unsupported_state;
+    line.end = line_end::unsupported_state;
+  }
   r.end = line.end;
   for (T f : line.folds) r.folds.push_back(sys.ft_of(f));
   for (std::size_t i = 0; i < line.nodes.size(); ++i) {
@@ -80,9 +114,11 @@ inline void critical_line_at_imp(const TwoLevelSeta<T>& s, const T* Ft, std::siz
 // the tolerance (validation/README.md, "Lines that never leave their start, and rounding
 // floors"); 11 more bits lower that floor, below the tolerance for two give-ups in five of the
 // 10,000-design re-run (validation/README.md, "Give-ups retried in long double"). The retry's march
-// goes on in arclength where its steps in Ft collapse (separatrix_arclength.hpp). Only a converged
-// or inadmissible answer replaces the double one: any other status of the retry leaves the give-up
-// as it was. States solved in double are not touched.
+// goes on in arclength where its steps in Ft collapse (separatrix_arclength.hpp), and so does the
+// natural state's march in lambda (natural_state.hpp). Only a converged or inadmissible answer
+// replaces the double one, and an unsupported one (status 3) where double's natural state gave up
+// (status 1): any other status of the retry leaves the give-up as it was. States solved in double
+// are not touched.
 template <class Policy, bool E1, bool E2>
 inline void retry_in_long_double(const TwoLevelSeta<double>& s, const double* Ft, std::size_t count,
                                  const critical_line_options<double>& opt, critical_state<double>* out) {
@@ -115,8 +151,16 @@ inline void retry_in_long_double(const TwoLevelSeta<double>& s, const double* Ft
   }
   for (std::size_t k = 0; k < which.size(); ++k) {
     const critical_state<L>& r = res[k];
-    if (r.status != critical_status::converged && r.status != critical_status::inadmissible) continue;
     critical_state<double>& o = out[which[k]];
+    // Where double gave up with status 1 (nearly always the natural state's homotopy), the retry
+    // may find the edge of the model's forms instead (natural_state.hpp, or a line that ends
+    // there): a state beyond what the model represents, status 3 as in double.
+    if (r.status == critical_status::unsupported_state && o.status == critical_status::not_converged) {
+      o.status = r.status;
+      o.iterations = r.iterations;
+      continue;
+    }
+    if (r.status != critical_status::converged && r.status != critical_status::inadmissible) continue;
     o.Fn = double(r.Fn);
     o.theta_joint = double(r.theta_joint);
     o.status = r.status;

@@ -12,7 +12,10 @@
 // (solve_with_plans), so it is a root of the design's own equations whatever path led there.
 // Last, where the first path stalled because a segment lies on its separatrix to double precision
 // (a beam tens of saddle time constants long), the separatrix limit system is followed in lambda
-// from that stall (natural_state_on_separatrix below).
+// from that stall (natural_state_on_separatrix below), in a type wider than double on by
+// arclength where its steps collapse (detail/separatrix_homotopy.hpp). Where every route fails
+// and one ran into the edge of the model's forms, the natural state is unsupported (status 3; in
+// double only where the first path met it, see natural_state).
 #pragma once
 
 #include <algorithm>
@@ -23,11 +26,39 @@
 
 #include "gecko/seta/detail/continuation.hpp"
 #include "gecko/seta/detail/homotopy_system.hpp"
+#include "gecko/seta/detail/separatrix_homotopy.hpp"
 #include "gecko/seta/detail/separatrix_limit.hpp"
 #include "gecko/seta/solve_critical.hpp"
 
 namespace gecko {
 namespace detail {
+
+// The line parameter of a homotopy followed in arclength, mu = scale x lambda: the state grows like
+// lambda (eq 18), so with scale ~ |z0|/lambda0 a step moves lambda and z alike (homotopy_system).
+template <class Vec, class T>
+inline T homotopy_scale(const Vec& z0, T lambda0) {
+  using std::fabs;
+  T scale = T(1);
+  for (int i = 0; i < z0.size(); ++i) scale = std::max(scale, fabs(z0[i]) / lambda0);
+  return scale;
+}
+
+// A homotopy System (homotopy_system, separatrix_homotopy_system) followed by pseudo-arclength from
+// z0 at lambda0 to lambda = 1, through folds in lambda.
+template <class HomotopySystem>
+inline traced_line<HomotopySystem> follow_homotopy(const HomotopySystem& hs, const typename HomotopySystem::vec& z0,
+                                                   typename HomotopySystem::value_type lambda0,
+                                                   const typename HomotopySystem::plan_type& plan0) {
+  using T = typename HomotopySystem::value_type;
+  continuation_options<T> copt;
+  copt.ft_stop = hs.scale;
+  copt.ft_max = std::numeric_limits<T>::infinity();
+  copt.scale = hs.scale;
+  copt.tolerance = T(1e-10);
+  copt.max_nodes = 2000;
+  copt.stall_window = 200;
+  return follow_line(hs, z0, lambda0 * hs.scale, plan0, 1, copt);
+}
 
 // The path followed by pseudo-arclength continuation in (z, lambda) from the solved start (z0 at
 // lambda0) through folds in lambda to lambda = 1, then polished there (see the header comment).
@@ -39,18 +70,8 @@ inline critical_status natural_state_around_folds(const System& sys, const homot
                                                   const typename System::plan_type& plan0, typename System::vec& z,
                                                   typename System::plan_type& plan, int& iterations) {
   using T = typename System::value_type;
-  using std::fabs;
-  T scale = T(1);
-  for (int i = 0; i < System::n; ++i) scale = std::max(scale, fabs(z0[i]) / lambda0);
-  const homotopy_system<System> hs{sys, path, scale};
-  continuation_options<T> copt;
-  copt.ft_stop = scale;
-  copt.ft_max = std::numeric_limits<T>::infinity();
-  copt.scale = scale;
-  copt.tolerance = T(1e-10);
-  copt.max_nodes = 2000;
-  copt.stall_window = 200;
-  const traced_line<homotopy_system<System>> line = follow_line(hs, z0, lambda0 * scale, plan0, 1, copt);
+  const homotopy_system<System> hs{sys, path, homotopy_scale(z0, lambda0)};
+  const traced_line<homotopy_system<System>> line = follow_homotopy(hs, z0, lambda0, plan0);
   iterations += static_cast<int>(line.nodes.size());
   if (line.end == line_end::unsupported_state) return critical_status::unsupported_state;
   if (line.end != line_end::reached_ft_end) return critical_status::not_converged;
@@ -145,10 +166,28 @@ inline critical_status natural_state_on_path(const System& sys, const homotopy_p
 
 // The natural state past a path's stall next to a separatrix (the generic System: none).
 template <class System>
-inline bool natural_state_on_separatrix(const System&, const homotopy_path<typename System::value_type>&,
-                                        const homotopy_stall<System>&, typename System::vec&,
-                                        typename System::plan_type&, int&) {
-  return false;
+inline critical_status natural_state_on_separatrix(const System&, const homotopy_path<typename System::value_type>&,
+                                                   const homotopy_stall<System>&, typename System::vec&,
+                                                   typename System::plan_type&, int&) {
+  return critical_status::not_converged;
+}
+
+// The limit system's path followed by pseudo-arclength in (z, lambda) from its state zc at lambda
+// (where the monotone steps in lambda collapsed) to lambda = 1, as natural_state_around_folds
+// follows the full system's (detail/separatrix_homotopy.hpp). converged with zc the state at
+// lambda = 1; unsupported_state where the path runs into the edge of the model's forms (an axial
+// load comparable to EA, follow_line's line_end::unsupported_state); else not_converged.
+template <class T, class Policy, bool E1, bool E2>
+inline critical_status limit_path_around_folds(const seta_system<T, Policy, E1, E2>& sys, const homotopy_path<T>& path,
+                                               int mask, typename seta_system<T, Policy, E1, E2>::vec& zc, T lambda,
+                                               int& iterations) {
+  const separatrix_homotopy_system<T, Policy, E1, E2> hs{sys, path, homotopy_scale(zc, lambda), mask};
+  const auto line = follow_homotopy(hs, zc, lambda, hs.plan(zc, lambda * hs.scale));
+  iterations += static_cast<int>(line.nodes.size());
+  if (line.end == line_end::unsupported_state) return critical_status::unsupported_state;
+  if (line.end != line_end::reached_ft_end) return critical_status::not_converged;
+  zc = line.nodes.back().z;
+  return critical_status::converged;
 }
 
 // The seta: where the monotone steps stalled with a segment many saddle time constants long on its
@@ -159,15 +198,17 @@ inline bool natural_state_on_separatrix(const System&, const homotopy_path<typen
 // the exact one and certified by separatrix_target_state (the turning points within one of the
 // stall's). Kept only where the design's own plan at that state gives the same turning points.
 template <class T, class Policy, bool E1, bool E2>
-inline bool natural_state_on_separatrix(const seta_system<T, Policy, E1, E2>& sys, const homotopy_path<T>& path,
-                                        const homotopy_stall<seta_system<T, Policy, E1, E2>>& stall,
-                                        typename seta_system<T, Policy, E1, E2>::vec& z, seta_plan& plan,
-                                        int& iterations) {
+inline critical_status natural_state_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
+                                                   const homotopy_path<T>& path,
+                                                   const homotopy_stall<seta_system<T, Policy, E1, E2>>& stall,
+                                                   typename seta_system<T, Policy, E1, E2>::vec& z, seta_plan& plan,
+                                                   int& iterations) {
+  constexpr critical_status failed = critical_status::not_converged;
   using std::fabs;
   using Sys = seta_system<T, Policy, E1, E2>;
   using Lim = separatrix_system<T, Policy, E1, E2>;
   using vec = typename Sys::vec;
-  if (!stall.valid) return false;
+  if (!stall.valid) return failed;
   const T tol = T(1e-12);
   T lengths[2], gaps[2];
   int expected[2];
@@ -178,11 +219,11 @@ inline bool natural_state_on_separatrix(const seta_system<T, Policy, E1, E2>& sy
     const Sys hs = path.at(sys, stall.lambda);
     separatrix_measures(hs, zc, T(0), lengths, gaps);
     mask = separatrix_mask(lengths, gaps);
-    if (!mask) return false;
+    if (!mask) return failed;
     hs.turning_points(stall.plan, zc, T(0), expected[0], expected[1]);
     const Lim lim{hs, mask};
     seta_plan p = lim.plan(zc, T(0));
-    if (!solve_separatrix(lim, zc, T(0), p, tol, iterations)) return false;
+    if (!solve_separatrix(lim, zc, T(0), p, tol, iterations)) return failed;
     joined = limit_ends_joined(lim, zc, T(0));
   }
   // March in lambda: secant predictor, the step grown after a success and halved after a failure;
@@ -203,7 +244,17 @@ inline bool natural_state_on_separatrix(const seta_system<T, Policy, E1, E2>& sy
     iterations += its;
     if (!ok) {
       h /= 2;
-      if (h < T(1e-9)) return false;
+      if (h < T(1e-9)) {
+        // The steps in lambda collapsed (a fold of the path in lambda, or a point Newton in
+        // lambda cannot pass): go on by arclength in (z, lambda) to lambda = 1.
+        // Only in a type wider than double, as the march in Ft (critical_line.hpp): only the
+        // long-double retry of give-ups goes on, so no state solved in double changes.
+        if (!(std::numeric_limits<T>::digits > std::numeric_limits<double>::digits)) return failed;
+        const critical_status around = limit_path_around_folds(sys, path, mask, zc, lam, iterations);
+        if (around != critical_status::converged) return around;
+        lam = 1;
+        break;
+      }
       continue;
     }
     z_prev = zc;
@@ -217,22 +268,23 @@ inline bool natural_state_on_separatrix(const seta_system<T, Policy, E1, E2>& sy
     if (grown != mask || !joined) joined = limit_ends_joined(Lim{ht, grown}, zc, T(0));  // else kept joined
     mask = grown;
   }
-  if (lam < 1) return false;
+  if (lam < 1) return failed;
   critical_state<T> r;
   vec zs;
-  if (!separatrix_target_state(Lim{sys, mask}, zc, T(0), T(0), tol, expected, iterations, r, &zs)) return false;
+  if (!separatrix_target_state(Lim{sys, mask}, zc, T(0), T(0), tol, expected, iterations, r, &zs)) return failed;
   seta_plan full = plan_at_solution(sys, zs, T(0));
   int tb, ts;
   sys.turning_points(full, zs, T(0), tb, ts);
-  if (tb != r.turning_points_beam || ts != r.turning_points_spatula) return false;
+  if (tb != r.turning_points_beam || ts != r.turning_points_spatula) return failed;
   z = zs;
   plan = full;
-  return true;
+  return critical_status::converged;
 }
 
 // The natural state at Ft = 0 by homotopy (see the header comment).
 // Returns converged, or why not (unsupported_state when the first path runs into states whose
-// axial load reaches EA, outside the model's forms).
+// axial load reaches EA, outside the model's forms; in a type wider than double, also where every
+// route failed and one of them ran into that edge).
 template <class System>
 inline critical_status natural_state(const System& sys, typename System::vec& z, typename System::plan_type& plan,
                                      int& iterations) {
@@ -243,14 +295,26 @@ inline critical_status natural_state(const System& sys, typename System::vec& z,
   // first path missed; the reverse order, w last, found almost none).
   const homotopy_path<T> paths[] = {{1, 1}, {4, 1}, {2, 1}};
   critical_status first = critical_status::not_converged;
+  bool edge = false;  // a route ran into the edge of the model's forms
   homotopy_stall<System> stall;
   for (int k = 0; k < 3; ++k) {
     const critical_status st = natural_state_on_path(sys, paths[k], z, plan, iterations, k == 0 ? &stall : nullptr);
     if (st == critical_status::converged) return st;
     if (k == 0) first = st;
+    edge = edge || st == critical_status::unsupported_state;
   }
-  // Last, past the first path's stall on the separatrix limit (the seta only).
-  if (natural_state_on_separatrix(sys, paths[0], stall, z, plan, iterations)) return critical_status::converged;
+  // Last, past the first path's stall on the separatrix limit (the seta only; it goes on past a
+  // collapse of its steps in a wider type only, and may meet the edge there).
+  const critical_status limit = natural_state_on_separatrix(sys, paths[0], stall, z, plan, iterations);
+  if (limit == critical_status::converged || limit == critical_status::unsupported_state) return limit;
+  // Every route failed and one ran into the edge (an axial load comparable to EA), the others
+  // turning back or stalling before it: the natural state, as far as the homotopies reach it, lies
+  // beyond what the model represents (status 3, as where the first path meets the edge). Only in a
+  // type wider than double: a double give-up stays status 1, so the long-double retry of give-ups
+  // (critical_line.hpp) runs and decides, and no state it solved before changes (validation/README.md,
+  // "Where the give-ups end, and natural states at the edge of the forms").
+  if (edge && std::numeric_limits<T>::digits > std::numeric_limits<double>::digits)
+    return critical_status::unsupported_state;
   return first;
 }
 
