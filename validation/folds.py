@@ -20,6 +20,15 @@ fold near the branch, a root or a jump of the shot, which this count does not te
 validation/claims.py's refine does; so the line may go on there and the claim is in doubt),
 ``undecided`` (bisection met another status, the shot found no root at gecko's state, or the time
 limit).
+
+4. The pair test (``fold_pair``, ``pair_verdict``; its own verdict ``pair_verdict``, which does not
+   enter ``verdict``): a fold is two roots that merge. At 1e-4 and 1e-6 of the scale short of the
+   fold, gecko's state A and the shot's nearest other root B; past the fold by as much, no sign
+   change within two gaps |B - A| of the pair; and the gap shrinking as the square root of the
+   distance. Next to a long segment the shot has a dense family of roots (paths with a loop more
+   or fewer, their Fn within O(delta) of each other), and the nearest other root can be one of
+   them rather than the fold's partner: then the gap does not follow the square root, and the
+   verdict is undecided (validation/README.md, "Where the give-ups end").
 That the line, past the fold, comes back over its start is gecko's march alone; this check
 establishes the fold it turned at.
 
@@ -32,7 +41,9 @@ as it took 2):
     PYTHONPATH=python:. python3 -m validation.folds NEW.npz --since OLD.npz --sample 6 --seed 0 \\
         --json validation/results/folds_sample.json          (claims: status 2 in NEW, 1 or 6 in OLD)
     PYTHONPATH=python:. python3 -m validation.folds --redo validation/results/folds_sample.json \\
-        --json validation/results/folds_redo.json
+        --json validation/results/folds_redo.json                (before the pair test)
+    PYTHONPATH=python:. python3 -m validation.folds --redo validation/results/folds_sample.json \\
+        --time-limit 240 --json validation/results/folds_pair_redo.json   (with it)
 """
 from __future__ import annotations
 
@@ -66,6 +77,66 @@ def fold_ft(seta, Ft_claim, halvings=30):
         else:
             return None
     return lo, hi
+
+
+PAIR_ETAS = (1e-4, 1e-6)  # distances from the fold of the pair test, relative to max(1, |Ft_fold|)
+
+
+def _signs(shoot, xs):
+    from mpmath import mp, mpf
+    with mp.workprec(shoot.prec):
+        return [1 if shoot(mpf(x))[0] > 0 else -1 for x in xs]
+
+
+def fold_pair(d, seta, lo, hi, eta):
+    """The fold as two roots that merge: eta (relative to max(1, |Ft_fold|)) short of the fold
+    [lo, hi], gecko's state A and the shot's nearest other root B (windows around A growing by 4x
+    from 1e-6 max(1, |A|), 21 points each, until a sign change outside A's cell); eta past it, the
+    shot's sign changes on [m - 2 gap, m + 2 gap] (41 points), m = (A + B)/2, gap = |B - A|. At a
+    quadratic fold gap ~ sqrt(eta) and past it no root is left near m. None where gecko has no
+    state short of the fold."""
+    import seta_separatrix_mp as ssm
+    scale = max(1.0, abs(hi))
+    sgn = 1.0 if hi > 0 else -1.0
+    before, past = lo - sgn * eta * scale, hi + sgn * eta * scale
+    line = seta.critical_line(Ft=[before], errors="nan")
+    if int(line.status[0]) not in (0, 7):
+        return None
+    A = float(line.Fn[0])
+    L1, L2 = ssm.saddle_lengths(d, math.hypot(A, before))
+    shoot_before = ssm._bracket(d, before, A, L1 + L2, 1e-11)[0]
+    shoot_past = ssm._bracket(d, past, A, L1 + L2, 1e-11)[0]
+    out = dict(eta=eta, Ft_before=before, Ft_past=past, A=A, B=None)
+    for j in range(14):
+        w = 1e-6 * max(1.0, abs(A)) * 4.0 ** j
+        xs = np.linspace(A - w, A + w, 21)
+        sg = _signs(shoot_before, xs)
+        others = [k for k in range(20) if sg[k] != sg[k + 1] and not xs[k] <= A <= xs[k + 1]]
+        if others:
+            k = min(others, key=lambda k: abs(0.5 * (xs[k] + xs[k + 1]) - A))
+            out["B"] = float(0.5 * (xs[k] + xs[k + 1]))
+            break
+    if out["B"] is None:
+        return out
+    gap = abs(out["B"] - A)
+    m = 0.5 * (A + out["B"])
+    xs = np.linspace(m - 2 * gap, m + 2 * gap, 41)
+    sp = _signs(shoot_past, xs)
+    out.update(gap=gap, past_changes=sum(1 for a, c in zip(sp, sp[1:]) if a != c))
+    return out
+
+
+def pair_verdict(pairs):
+    """fold_confirmed where at both distances a partner root was found, none is left past the fold
+    near the pair, and the gap shrinks as sqrt(eta) (ratio within 2x of the square root of the
+    distances' ratio); else root_past_fold (a root past the fold near the pair) or undecided."""
+    if any(p is None or p["B"] is None for p in pairs):
+        return "undecided"
+    if any(p["past_changes"] for p in pairs):
+        return "root_past_fold"
+    want = math.sqrt(pairs[0]["eta"] / pairs[1]["eta"])
+    ratio = pairs[0]["gap"] / pairs[1]["gap"]
+    return "fold_confirmed" if want / 2 <= ratio <= want * 2 else "undecided"
 
 
 def check(d, Ft_claim, limit):
@@ -111,12 +182,15 @@ def check(d, Ft_claim, limit):
                 g = time_limited(limit, shoot, x)[0]
                 signs.append(1 if g > 0 else (-1 if g < 0 else 0))
         out["past_sign_changes"] = sum(1 for a, c in zip(signs, signs[1:]) if a != c)
+        pairs = time_limited(limit, lambda: [fold_pair(d, seta, lo, hi, eta) for eta in PAIR_ETAS])
     except TimeLimit:
         out["verdict"] = "undecided"
         out["why"] = f"time limit ({limit} s)"
         return out
+    out["pairs"] = pairs
     out["seconds"] = round(time.time() - t, 1)
     out["verdict"] = "fold_confirmed" if out["past_sign_changes"] == 0 else "root_past_fold"
+    out["pair_verdict"] = pair_verdict(pairs)
     return out
 
 
@@ -147,16 +221,18 @@ def main(argv=None):
         designs = new["P"]
         claims_count = int(claims.sum())
     t0 = time.time()
-    states, verdicts = [], {}
+    states, verdicts, pair_verdicts = [], {}, {}
     for i, Ft in jobs:
         d = dict(zip(campaign.FIELDS, map(float, designs[i])))
         r = check(d, Ft, a.time_limit)
         r["design"] = int(i)
         states.append(r)
         verdicts[r["verdict"]] = verdicts.get(r["verdict"], 0) + 1
+        if "pair_verdict" in r:
+            pair_verdicts[r["pair_verdict"]] = pair_verdicts.get(r["pair_verdict"], 0) + 1
         print(json.dumps(r), flush=True)
     summary = dict(npz=a.npz, since=a.since, redo=a.redo, claims=claims_count, sample=len(states), seed=a.seed,
-                   time_limit=a.time_limit, verdicts=verdicts, seconds=round(time.time() - t0, 1), states=states)
+                   time_limit=a.time_limit, verdicts=verdicts, pair_verdicts=pair_verdicts, seconds=round(time.time() - t0, 1), states=states)
     text = json.dumps(summary, indent=1)
     if a.json:
         with open(a.json, "w") as f:

@@ -435,3 +435,20 @@ def test_folds_bisection_brackets_the_fold_and_refuses_other_statuses():
     lo, hi = folds.fold_ft(Folded(-3.25), -10.0)
     assert hi < -3.25 < lo and lo - hi < 10.0 / 2**29
     assert folds.fold_ft(Folded(-3.25, other=(-6.0, -4.0)), -10.0) is None
+
+
+def test_folds_pair_verdict_wants_a_partner_that_closes_as_the_square_root():
+    # validation/folds.py's pair test: two roots that merge at the fold, their gap ~ sqrt(distance),
+    # none left past it. Injected failures: a gap that does not close, a root past the fold, no
+    # partner found, no state short of the fold.
+    from validation import folds
+
+    def pair(eta, gap, past=0, found=True):
+        return dict(eta=eta, B=1.0 if found else None, gap=gap, past_changes=past)
+
+    fold = [pair(1e-4, 3e-3), pair(1e-6, 3e-4)]
+    assert folds.pair_verdict(fold) == "fold_confirmed"
+    assert folds.pair_verdict([pair(1e-4, 3e-3), pair(1e-6, 2.5e-3)]) == "undecided"  # 311-like
+    assert folds.pair_verdict([pair(1e-4, 3e-3), pair(1e-6, 3e-4, past=3)]) == "root_past_fold"
+    assert folds.pair_verdict([pair(1e-4, 3e-3), pair(1e-6, 3e-4, found=False)]) == "undecided"
+    assert folds.pair_verdict([pair(1e-4, 3e-3), None]) == "undecided"

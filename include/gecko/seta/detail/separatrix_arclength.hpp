@@ -133,17 +133,12 @@ inline void march_limit_in_arclength(const seta_system<T, Policy, E1, E2>& sys, 
     separatrix_measures(sys, m.z, m.mu, lengths, gaps);
     for (int k = 0; k < 2; ++k)
       if ((lim.mask >> k & 1) && !(lengths[k] >= T(separatrix_long_segment))) return;
-    const int grown = lim.mask | separatrix_mask(lengths, gaps);
-    if (grown != lim.mask || !m.joined) {
-      if (grown != lim.mask) {
-        lim.mask = grown;
-        m.plan = lim.plan(m.z, m.mu);
-        if (!solve_separatrix(lim, m.z, m.mu, m.plan, mtol, m.iterations)) return;
-        x.template head<4>() = m.z;
-        if (!tangent_at(lim, m.z, m.mu, m.plan, t, tn)) return;
-        t = tn;
-      }
-      m.joined = limit_ends_joined(lim, m.z, m.mu);
+    const int grew = grow_limit_segments(lim, lengths, gaps, m.z, m.mu, m.plan, mtol, m.iterations, m.joined);
+    if (grew < 0) return;
+    if (grew > 0) {
+      x.template head<4>() = m.z;
+      if (!tangent_at(lim, m.z, m.mu, m.plan, t, tn)) return;
+      t = tn;
     }
     // Back over the line's start after a fold: the line has turned back (detail/continuation.hpp),
     // and the march stops. Its targets stay not reached rather than get "no critical state": of six

@@ -63,7 +63,7 @@ inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
   std::sort(targets.begin(), targets.end());
   T lengths[2], gaps[2];
   separatrix_measures(sys, last.z, mu0, lengths, gaps);
-  int mask = separatrix_mask(lengths, gaps);
+  const int mask = separatrix_mask(lengths, gaps);
   if (!mask) return;
   int expected[2];
   sys.turning_points(line.plans.back(), last.z, mu0, expected[0], expected[1]);
@@ -112,17 +112,7 @@ inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
     h = std::min(h * T(1.5), h_max);
     // A segment that has come next to its separatrix on the way joins the limit ones.
     separatrix_measures(sys, z, mu, lengths, gaps);
-    const int grown = mask | separatrix_mask(lengths, gaps);
-    // A joined step stays joined (keep_ends_joined checked it); a new limit segment, or a march
-    // not yet joined, is checked afresh.
-    if (grown != mask) {
-      mask = lim.mask = grown;
-      plan = lim.plan(z, mu);
-      if (!solve_separatrix(lim, z, mu, plan, mtol, its)) break;
-      joined = limit_ends_joined(lim, z, mu);
-    } else if (!joined) {
-      joined = limit_ends_joined(lim, z, mu);
-    }
+    if (grow_limit_segments(lim, lengths, gaps, z, mu, plan, mtol, its, joined) < 0) break;
     while (next < targets.size() && mu == mu0 + dir * targets[next].first) {
       const std::size_t i = targets[next].second;
       critical_state<T> r;

@@ -303,6 +303,28 @@ inline int separatrix_mask(const T lengths[2], const T gaps[2]) {
   return mask;
 }
 
+// A march's step: a segment that has come next to its separatrix on the way (lengths, gaps:
+// separatrix_measures at (z, mu)) joins the limit ones. The limit system is then planned and
+// solved again there and whether a path joins its ends is checked afresh; otherwise a march not
+// yet joined is checked, and one joined stays so (keep_ends_joined kept it). Shared by the marches
+// in Ft (detail/separatrix_extend.hpp) and in arclength (detail/separatrix_arclength.hpp).
+// Returns -1 where the new solve fails, 1 where the mask grew, else 0.
+template <class T, class Policy, bool E1, bool E2>
+inline int grow_limit_segments(separatrix_system<T, Policy, E1, E2>& lim, const T lengths[2], const T gaps[2],
+                               typename seta_system<T, Policy, E1, E2>::vec& z, T mu, seta_plan& plan, T tol,
+                               int& iterations, bool& joined) {
+  const int grown = lim.mask | separatrix_mask(lengths, gaps);
+  if (grown != lim.mask) {
+    lim.mask = grown;
+    plan = lim.plan(z, mu);
+    if (!solve_separatrix(lim, z, mu, plan, tol, iterations)) return -1;
+    joined = limit_ends_joined(lim, z, mu);
+    return 1;
+  }
+  if (!joined) joined = limit_ends_joined(lim, z, mu);
+  return 0;
+}
+
 // Whether segment i (0 beam, 1 spatula) is long and its separatrix distance below what a state's
 // digits resolve (separatrix_unresolved_exponent): its length equation, logarithmic in a distance
 // formed by cancellation, then holds for rounding noise rather than for the state.
