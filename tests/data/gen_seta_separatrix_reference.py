@@ -147,6 +147,14 @@ CASES = [
                             EA2=8367569.608136437, l1=1.0, l2=0.007244529394974517, alpha1=0.93690330178437,
                             alpha2=0.4760023971554903, w=1.0),
      [0.0, 2766.188288194081, 3681.7744044388473, 4086.7695889271204], "bracket"),
+    # campaign design 9080 at its Ft >= 0: the line stalls with the beam on its separatrix and the
+    # limit system does not converge at its last node; the long-double retry starts the march from
+    # a node before it (gecko/seta/detail/separatrix_extend.hpp) and solves Ft = 66.99, given up
+    # before (status 6)
+    ("back_9080", dict(EI1=0.25274405807769323, EI2=3.654208814250192, EA1=526.2736245309839,
+                       EA2=2248.5938342403933, l1=1.0, l2=0.09695371858454302, alpha1=1.472203933340284,
+                       alpha2=0.022471702581845002, w=1.0),
+     [0.0, 66.99401309319731], "bracket"),
     # campaign design 3486 at its Ft < 0: the march in Ft collapsed at Ft = -35.06 at a fold of the
     # line in Ft; the long-double retry's march in arclength passes it and a second fold (Ft = -24.8), and first crosses
     # Ft = -35.1 and the campaign's -42.44 after that (the beam 110 saddle time constants long at

@@ -336,6 +336,28 @@ TEST_CASE("the march goes on in arclength where its steps in Ft collapse", "[set
   }
 }
 
+TEST_CASE("where the limit system does not converge at the line's last node, the march starts before it",
+          "[seta][separatrix]") {
+  // Campaign design 9080 (back_9080 of the reference table, whose values the first test case
+  // checks): the followed line ends at Ft = 63.76 (no convergence) with the beam on its
+  // separatrix, and the limit system does not converge at that last node, so Ft = 66.99 was
+  // status 6. The long-double retry starts the march from a node before it on the same branch
+  // (gecko/seta/detail/separatrix_extend.hpp).
+  if (std::numeric_limits<long double>::digits <= std::numeric_limits<double>::digits) {
+    WARN("long double is no wider than double here: no retry");
+    return;
+  }
+  const auto s = reference_design("back_9080");
+  gecko::critical_line_options<double> o;
+  o.ft_end = 66.99401309319731;
+  const auto line = gecko::critical_line(s, o);
+  CHECK(line.end == gecko::line_end::no_convergence);
+  CHECK(line.points.back().Ft < 64);
+  const auto got = gecko::critical_line_at(s, std::vector<double>{66.99401309319731});
+  INFO("status " << static_cast<int>(got[0].status));
+  CHECK(got[0].status == gecko::critical_status::converged);
+}
+
 TEST_CASE("the march in arclength passes folds of the line in Ft", "[seta][separatrix]") {
   // Campaign design 3486 (arclength_fold_3486 of the reference table, whose values the first test
   // case checks): towards negative Ft the march in Ft collapsed at a fold of the line, Ft = -35.06
