@@ -200,6 +200,45 @@ def test_batch_equals_serial_bitwise_and_thread_independent():
     np.testing.assert_array_equal(res.Fn[0], one.Fn[0])
 
 
+def test_mixed_signs_equal_each_direction_alone():
+    # critical_line(Ft=...) computes the natural state once for the lines followed from it towards
+    # positive and negative Ft: each direction's states are bit for bit those of a call with that
+    # direction's targets alone. Designs: the reference; campaign design 67, whose followed line
+    # never leaves Ft = 0 (its positive targets are solved on the separatrix limit, its negative
+    # one is given up); campaign design 1005, whose positive targets are solved by the long-double
+    # retry of give-ups (tests/data/seta_separatrix_reference.csv, long_double_1005).
+    cases = [
+        (gecko.TwoLevelSeta(), [-3.0, 0.0, 2.0, -0.5, 9.0]),
+        (gecko.TwoLevelSeta(EI1=0.21555292182338973, EI2=43.0027243533097, EA1=64.20496458992673,
+                            EA2=25673.606329746704, l1=1.0, l2=0.0065046909845071655,
+                            alpha1=0.24539953004201956, alpha2=1.0586604563532502, w=1.0),
+         [-118.56693623635869, 0.0, 84.25776419106023, 51.35427316960929, -40.0]),
+        (gecko.TwoLevelSeta(EI1=0.27838952633169495, EI2=1.270807598552047, EA1=34629.42471111142,
+                            EA2=87772.04693377482, l1=1.0, l2=0.09695729933128887,
+                            alpha1=1.006282082105714, alpha2=0.2716690124304871, w=1.0),
+         [-116.02457981371899, 0.0, 164.2456444511225, 210.259320846518, 377.08184261870156]),
+    ]
+    fields = ("Fn", "theta_joint", "status", "turning_points_beam", "turning_points_spatula",
+              "theta_rate_joint", "theta_rate_base", "min_z")
+    statuses = set()
+    for seta, ft in cases:
+        ft = np.array(ft)
+        both = seta.critical_line(Ft=ft, errors="nan")
+        statuses.update(both.status.tolist())
+        for part in (ft >= 0, ft < 0):
+            alone = seta.critical_line(Ft=ft[part], errors="nan")
+            for f in fields:
+                np.testing.assert_array_equal(getattr(both, f)[part], getattr(alone, f), err_msg=f)
+    assert {0, 6} <= statuses  # solved states and a give-up are both compared
+    fiber = gecko.SingleFiber()
+    ft = np.array([-2.0, 0.0, 5.0, -0.25, 9.9])
+    both = fiber.critical_line(Ft=ft)
+    for part in (ft >= 0, ft < 0):
+        alone = fiber.critical_line(Ft=ft[part])
+        np.testing.assert_array_equal(both.Fn[part], alone.Fn)
+        np.testing.assert_array_equal(both.status[part], alone.status)
+
+
 def test_exports():
     for name in ("TwoLevelSeta", "kendall_fn", "rivlin_fn", "critical_line_batch"):
         assert name in gecko.__all__ and hasattr(gecko, name)

@@ -400,11 +400,7 @@ inline seta_characteristics<T> characteristics_imp(const TwoLevelSeta<T>& s, con
   typename System::plan_type plan0;
   critical_state<T> natural;
   traced_line<System> line;
-  if (!trace(sys, end, scale, opt, 0, z0, plan0, natural, line)) {
-    // As the traced line (critical_line.hpp): status 3 where long double finds the edge.
-    if (natural.status == critical_status::not_converged &&
-        natural_state_decided_wider<Policy, E1, E2>(s, opt.strain_limit) == critical_status::unsupported_state)
-      line.end = line_end::unsupported_state;
+  if (!trace_design(s, sys, end, scale, opt, z0, plan0, natural, line)) {
     c.end = line.end;
     return c;
   }

@@ -18,7 +18,6 @@
 #include <cmath>
 #include <cstddef>
 #include <exception>
-#include <limits>
 #include <type_traits>
 #include <vector>
 
@@ -47,8 +46,7 @@ namespace detail {
 // (the traced line is double's): not_converged, as before.
 template <class Policy, bool E1, bool E2, class T>
 inline critical_status natural_state_decided_wider(const TwoLevelSeta<T>& s, T strain_limit) {
-  if constexpr (std::is_same<T, double>::value &&
-                std::numeric_limits<long double>::digits > std::numeric_limits<double>::digits) {
+  if constexpr (std::is_same<T, double>::value && wider_than_double<long double>()) {
     using L = long double;
     const TwoLevelSeta<L> sl{L(s.EI1), L(s.EI2), L(s.EA1), L(s.EA2), L(s.l1), L(s.l2), L(s.alpha1), L(s.alpha2), L(s.w)};
     const seta_system<L, Policy, E1, E2> sys(make_seta_params(sl), L(strain_limit));
@@ -68,6 +66,24 @@ inline critical_status natural_state_decided_wider(const TwoLevelSeta<T>& s, T s
   return critical_status::not_converged;
 }
 
+// trace() on a design, with the natural state's verdict as critical_line_at's retry gives it: where
+// double's homotopy gave up (status 1) and long double finds every route ending at the edge of the
+// forms, the natural state is status 3 and the line ends unsupported_state. The traced line and the
+// characteristics follow the line this way.
+template <class Policy, bool E1, bool E2, class T>
+inline bool trace_design(const TwoLevelSeta<T>& s, const seta_system<T, Policy, E1, E2>& sys, T ft_stop, T scale,
+                         const critical_line_options<T>& opt, typename seta_system<T, Policy, E1, E2>::vec& z0,
+                         seta_plan& plan0, critical_state<T>& natural,
+                         traced_line<seta_system<T, Policy, E1, E2>>& line) {
+  if (trace(sys, ft_stop, scale, opt, 0, z0, plan0, natural, line)) return true;
+  if (natural.status == critical_status::not_converged &&
+      natural_state_decided_wider<Policy, E1, E2>(s, opt.strain_limit) == critical_status::unsupported_state) {
+    natural.status = critical_status::unsupported_state;
+    line.end = line_end::unsupported_state;
+  }
+  return false;
+}
+
 template <class Policy, bool E1, bool E2, class T>
 inline critical_line_result<T> critical_line_imp(const TwoLevelSeta<T>& s, const critical_line_options<T>& opt) {
   using System = seta_system<T, Policy, E1, E2>;
@@ -79,12 +95,7 @@ inline critical_line_result<T> critical_line_imp(const TwoLevelSeta<T>& s, const
   typename System::plan_type plan0;
   critical_line_result<T> r;
   traced_line<System> line;
-  if (!trace(sys, end, scale, opt, 0, z0, plan0, r.natural, line) &&
-      r.natural.status == critical_status::not_converged &&
-      natural_state_decided_wider<Policy, E1, E2>(s, opt.strain_limit) == critical_status::unsupported_state) {
-    r.natural.status = critical_status::unsupported_state;
-    line.end = line_end::unsupported_state;
-  }
+  trace_design(s, sys, end, scale, opt, z0, plan0, r.natural, line);
   r.end = line.end;
   for (T f : line.folds) r.folds.push_back(sys.ft_of(f));
   for (std::size_t i = 0; i < line.nodes.size(); ++i) {
@@ -191,31 +202,34 @@ inline void critical_line_at_imp(const TwoLevelSeta<T>& s, const T* Ft, std::siz
   if (pos.empty() && neg.empty()) return;
   using std::fabs; using std::sqrt;
   const T base_scale = sqrt(s.EI1 * s.w) / s.l1;
+  // One natural state for the lines in both directions.
   typename System::vec z0;
   typename System::plan_type plan0;
   critical_state<T> natural;
+  line_end natural_end;
+  const bool started = start_line(sys, z0, plan0, natural, natural_end);
   auto run = [&](const std::vector<std::size_t>& which, T stop) {
-    traced_line<System> line;
-    const T scale = std::max(fabs(stop), base_scale);
-    if (!trace(sys, stop, scale, opt, which.size(), z0, plan0, natural, line)) {
+    if (!started) {
       for (std::size_t i : which) {
         out[i].Ft = Ft[i];
         out[i].status = natural.status;
       }
       return;
     }
+    traced_line<System> line;
+    const T scale = std::max(fabs(stop), base_scale);
+    follow_from_natural(sys, stop, scale, opt, which.size(), z0, plan0, line);
     evaluate_line(sys, line, Ft, which.size(), which.data(), opt.tolerance, out);
     // A type wider than double marches in the separatrix limit at the line's tolerance and solves
     // the targets to the state's (separatrix_extend.hpp says why not in double), and goes on in
     // arclength where its steps in Ft collapse (separatrix_arclength.hpp says why only there).
-    const bool wide = std::numeric_limits<T>::digits > std::numeric_limits<double>::digits;
+    constexpr bool wide = wider_than_double<T>();
     extend_on_separatrix(sys, line, scale, Ft, which.size(), which.data(), opt.tolerance, out,
                          wide ? opt.line_tolerance : T(0), wide);
   };
   if (!pos.empty()) run(pos, hi);
   if (!neg.empty()) run(neg, lo);
-  if constexpr (std::is_same<T, double>::value &&
-                std::numeric_limits<long double>::digits > std::numeric_limits<double>::digits)
+  if constexpr (std::is_same<T, double>::value && wider_than_double<long double>())
     retry_in_long_double<Policy, E1, E2>(s, Ft, count, opt, out);
 }
 

@@ -245,17 +245,22 @@ inline void fiber_line_at_imp(const SingleFiber<T>& f, const T* Ft, std::size_t 
     if (Ft[i] >= 0) { pos.push_back(i); hi = std::max(hi, Ft[i]); }
     else { neg.push_back(i); lo = std::min(lo, Ft[i]); }
   }
+  if (pos.empty() && neg.empty()) return;
   const T base_scale = sqrt(f.EI * f.w) / f.l;
+  // One natural state for the lines in both directions.
+  typename System::vec z0;
+  segment_plan plan0;
+  critical_state<T> natural;
+  line_end natural_end;
+  const bool started = start_line(sys, z0, plan0, natural, natural_end);
   auto run = [&](const std::vector<std::size_t>& which, T stop) {
     if (which.empty()) return;
-    typename System::vec z0;
-    segment_plan plan0;
-    critical_state<T> natural;
-    traced_line<System> line;
-    if (!trace(sys, stop, std::max(fabs(stop), base_scale), opt, which.size(), z0, plan0, natural, line)) {
+    if (!started) {
       for (std::size_t i : which) out[i].status = natural.status;
       return;
     }
+    traced_line<System> line;
+    follow_from_natural(sys, stop, std::max(fabs(stop), base_scale), opt, which.size(), z0, plan0, line);
     evaluate_line(sys, line, Ft, which.size(), which.data(), opt.tolerance, out);
   };
   run(pos, hi);

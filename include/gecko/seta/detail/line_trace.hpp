@@ -66,29 +66,38 @@ inline T line_parameter(const System& sys, T Ft) {
   return sys.mu_of(Ft);
 }
 
-// Natural state + the followed line in one direction, up to Ft = ft_stop. outputs: how many
-// states will be read off the line; many outputs make denser nodes pay (better Hermite guesses,
-// fewer chord steps per output).
+// The natural state at Ft = 0 (detail/natural_state.hpp), node 0 of every line followed from it:
+// true where it converged (natural then holds it as a state), else natural.status and end say why.
+// A design's natural state is computed once and shared by the lines followed from it in both
+// directions (critical_line_at's positive and negative targets).
 template <class System, class T>
-inline bool trace(const System& sys, T ft_stop, T scale, const critical_line_options<T>& opt, std::size_t outputs,
-                  typename System::vec& z0, typename System::plan_type& plan0, critical_state<T>& natural,
-                  traced_line<System>& line) {
+inline bool start_line(const System& sys, typename System::vec& z0, typename System::plan_type& plan0,
+                       critical_state<T>& natural, line_end& end) {
   int its = 0;
   const critical_status nat = natural_state(sys, z0, plan0, its);
   if (nat != critical_status::converged) {
     natural.status = nat;
-    line.end = nat == critical_status::unsupported_state ? line_end::unsupported_state : line_end::no_natural_state;
+    end = nat == critical_status::unsupported_state ? line_end::unsupported_state : line_end::no_natural_state;
     return false;
   }
   natural = state_from(sys, z0, T(0), T(0), plan0, critical_status::converged, its);
+  return true;
+}
+
+// The line followed from the natural state (z0, plan0) in one direction, up to Ft = ft_stop.
+// outputs: how many states will be read off the line; many outputs make denser nodes pay (better
+// Hermite guesses, fewer chord steps per output).
+template <class System, class T>
+inline void follow_from_natural(const System& sys, T ft_stop, T scale, const critical_line_options<T>& opt,
+                                std::size_t outputs, const typename System::vec& z0,
+                                const typename System::plan_type& plan0, traced_line<System>& line) {
   if (ft_stop == 0) {
     line.nodes.push_back({z0, T(0), Eigen::Matrix<T, System::n + 1, 1>::Zero(), 0});
     line.plans.push_back(plan0);
     line.end = line_end::reached_ft_end;
-    return true;
+    return;
   }
   continuation_options<T> copt;
-  using std::fabs;
   copt.ft_max = sys.mu_limit();
   copt.ft_stop = line_parameter(sys, ft_stop);
   copt.scale = scale;
@@ -99,6 +108,16 @@ inline bool trace(const System& sys, T ft_stop, T scale, const critical_line_opt
   const T per_output = T(30) / static_cast<T>(outputs > 0 ? outputs : 1);
   copt.max_step = per_output < T(0.01) ? T(0.01) : (per_output > T(0.08) ? T(0.08) : per_output);
   line = follow_line(sys, z0, T(0), plan0, ft_stop > 0 ? 1 : -1, copt);
+}
+
+// Natural state + the followed line in one direction, up to Ft = ft_stop (false, with line.end
+// set, where there is no natural state).
+template <class System, class T>
+inline bool trace(const System& sys, T ft_stop, T scale, const critical_line_options<T>& opt, std::size_t outputs,
+                  typename System::vec& z0, typename System::plan_type& plan0, critical_state<T>& natural,
+                  traced_line<System>& line) {
+  if (!start_line(sys, z0, plan0, natural, line.end)) return false;
+  follow_from_natural(sys, ft_stop, scale, opt, outputs, z0, plan0, line);
   return true;
 }
 

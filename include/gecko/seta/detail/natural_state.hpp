@@ -249,7 +249,7 @@ inline critical_status natural_state_on_separatrix(const seta_system<T, Policy, 
         // lambda cannot pass): go on by arclength in (z, lambda) to lambda = 1.
         // Only in a type wider than double, as the march in Ft (critical_line.hpp): only the
         // long-double retry of give-ups goes on, so no state solved in double changes.
-        if (!(std::numeric_limits<T>::digits > std::numeric_limits<double>::digits)) return failed;
+        if (!wider_than_double<T>()) return failed;
         const critical_status around = limit_path_around_folds(sys, path, mask, zc, lam, iterations);
         if (around != critical_status::converged) return around;
         lam = 1;
@@ -313,7 +313,7 @@ inline critical_status natural_state(const System& sys, typename System::vec& z,
   // type wider than double: a double give-up stays status 1, so the long-double retry of give-ups
   // (critical_line.hpp) runs and decides, and no state it solved before changes (validation/README.md,
   // "Where the give-ups end, and natural states at the edge of the forms").
-  if (edge && std::numeric_limits<T>::digits > std::numeric_limits<double>::digits)
+  if (edge && wider_than_double<T>())
     return critical_status::unsupported_state;
   return first;
 }

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <limits>
 #include <utility>
 #include <vector>
 
@@ -80,7 +79,7 @@ inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
   // give-ups end"). mu_first: where the march starts.
   T mu_first = mu0;
   bool started = solve_separatrix(lim, z, mu0, plan, mtol, its);
-  if (!started && std::numeric_limits<T>::digits > std::numeric_limits<double>::digits) {
+  if (!started && wider_than_double<T>()) {
     for (std::size_t back = 1; back <= 5 && back < line.nodes.size() && !started; ++back) {
       const auto& node = line.nodes[line.nodes.size() - 1 - back];
       if (node.branch != last.branch || !((mu0 - node.Ft) * dir > 0)) break;

@@ -42,6 +42,14 @@ constexpr int separatrix_extra_digits() {
   constexpr int extra = std::numeric_limits<T>::digits - std::numeric_limits<double>::digits;
   return extra > 0 ? extra : 0;
 }
+// Is T wider than double? What only the long-double retry of give-ups does (critical_line.hpp) asks
+// this: the separatrix march at the line's tolerance, from a node before the line's last, and in
+// arclength past a collapse of its steps; the natural state's march in lambda past a collapse, and
+// its verdict at the edge of the forms. So no state solved in double changes.
+template <class T>
+constexpr bool wider_than_double() {
+  return separatrix_extra_digits<T>() > 0;
+}
 template <class T>
 constexpr int separatrix_resolved_exponent_of() {
   return separatrix_resolved_exponent - separatrix_extra_digits<T>();
