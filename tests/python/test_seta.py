@@ -239,6 +239,21 @@ def test_mixed_signs_equal_each_direction_alone():
         np.testing.assert_array_equal(both.status[part], alone.status)
 
 
+@pytest.mark.skipif(np.finfo(np.longdouble).nmant <= np.finfo(np.float64).nmant,
+                    reason="the retry of give-ups runs only where long double is wider than double")
+def test_retry_reports_a_line_given_up_as_status_6_not_1():
+    # Campaign design 7775: double's homotopy to the natural state gives up (status 1 everywhere);
+    # the long-double retry finds it and solves Ft = 0 and the positive targets, and its line
+    # towards negative Ft stops before Ft = -504.93. That target is status 6 (the line from Ft = 0
+    # exists and was given up on the way), as the retry's line says; it was status 1.
+    seta = gecko.TwoLevelSeta(EI1=0.10080516101182974, EI2=8.879466999540858, EA1=4.2413084413714754,
+                              EA2=571589.1012556991, l1=1.0, l2=0.02122973292440997,
+                              alpha1=0.1667794760138022, alpha2=1.2463937247486194, w=1.0)
+    line = seta.critical_line(Ft=[-504.92748189, 0.0, 38.97285313], errors="nan")
+    np.testing.assert_array_equal(line.status, [6, 0, 0])
+    assert np.isnan(line.Fn[0]) and line.Fn[1] == pytest.approx(-59.49229976, rel=1e-9)
+
+
 def test_exports():
     for name in ("TwoLevelSeta", "kendall_fn", "rivlin_fn", "critical_line_batch"):
         assert name in gecko.__all__ and hasattr(gecko, name)

@@ -127,9 +127,9 @@ inline void critical_line_at_imp(const TwoLevelSeta<T>& s, const T* Ft, std::siz
 // 10,000-design re-run (validation/README.md, "Give-ups retried in long double"). The retry's march
 // goes on in arclength where its steps in Ft collapse (separatrix_arclength.hpp), and so does the
 // natural state's march in lambda (natural_state.hpp). Only a converged or inadmissible answer
-// replaces the double one, and an unsupported one (status 3) where double's natural state gave up
-// (status 1): any other status of the retry leaves the give-up as it was. States solved in double
-// are not touched.
+// replaces the double one; where double gave up with status 1, also an unsupported one (status 3)
+// or a line given up before the target (status 6): any other status of the retry leaves the
+// give-up as it was. States solved in double are not touched.
 template <class Policy, bool E1, bool E2>
 inline void retry_in_long_double(const TwoLevelSeta<double>& s, const double* Ft, std::size_t count,
                                  const critical_line_options<double>& opt, critical_state<double>* out) {
@@ -165,8 +165,12 @@ inline void retry_in_long_double(const TwoLevelSeta<double>& s, const double* Ft
     critical_state<double>& o = out[which[k]];
     // Where double gave up with status 1 (nearly always the natural state's homotopy), the retry
     // may find the edge of the model's forms instead (natural_state.hpp, or a line that ends
-    // there): a state beyond what the model represents, status 3 as in double.
-    if (r.status == critical_status::unsupported_state && o.status == critical_status::not_converged) {
+    // there): a state beyond what the model represents, status 3 as in double. Or it finds the
+    // natural state and its line stops before this Ft: status 6, the line from Ft = 0 exists and
+    // was given up on the way, not "Newton did not converge" (design 7775 of the 10,000-design
+    // re-run, whose other Ft the retry solves).
+    if ((r.status == critical_status::unsupported_state || r.status == critical_status::not_reached) &&
+        o.status == critical_status::not_converged) {
       o.status = r.status;
       o.iterations = r.iterations;
       continue;
