@@ -210,8 +210,7 @@ inline void critical_line_at_imp(const TwoLevelSeta<T>& s, const T* Ft, std::siz
   typename System::vec z0;
   typename System::plan_type plan0;
   critical_state<T> natural;
-  line_end natural_end;
-  const bool started = start_line(sys, z0, plan0, natural, natural_end);
+  const bool started = start_line(sys, z0, plan0, natural);
   auto run = [&](const std::vector<std::size_t>& which, T stop) {
     if (!started) {
       for (std::size_t i : which) {

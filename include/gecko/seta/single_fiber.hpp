@@ -251,8 +251,7 @@ inline void fiber_line_at_imp(const SingleFiber<T>& f, const T* Ft, std::size_t 
   typename System::vec z0;
   segment_plan plan0;
   critical_state<T> natural;
-  line_end natural_end;
-  const bool started = start_line(sys, z0, plan0, natural, natural_end);
+  const bool started = start_line(sys, z0, plan0, natural);
   auto run = [&](const std::vector<std::size_t>& which, T stop) {
     if (which.empty()) return;
     if (!started) {

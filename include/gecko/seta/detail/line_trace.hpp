@@ -67,17 +67,16 @@ inline T line_parameter(const System& sys, T Ft) {
 }
 
 // The natural state at Ft = 0 (detail/natural_state.hpp), node 0 of every line followed from it:
-// true where it converged (natural then holds it as a state), else natural.status and end say why.
+// true where it converged (natural then holds it as a state), else natural.status says why.
 // A design's natural state is computed once and shared by the lines followed from it in both
 // directions (critical_line_at's positive and negative targets).
 template <class System, class T>
 inline bool start_line(const System& sys, typename System::vec& z0, typename System::plan_type& plan0,
-                       critical_state<T>& natural, line_end& end) {
+                       critical_state<T>& natural) {
   int its = 0;
   const critical_status nat = natural_state(sys, z0, plan0, its);
   if (nat != critical_status::converged) {
     natural.status = nat;
-    end = nat == critical_status::unsupported_state ? line_end::unsupported_state : line_end::no_natural_state;
     return false;
   }
   natural = state_from(sys, z0, T(0), T(0), plan0, critical_status::converged, its);
@@ -116,7 +115,11 @@ template <class System, class T>
 inline bool trace(const System& sys, T ft_stop, T scale, const critical_line_options<T>& opt, std::size_t outputs,
                   typename System::vec& z0, typename System::plan_type& plan0, critical_state<T>& natural,
                   traced_line<System>& line) {
-  if (!start_line(sys, z0, plan0, natural, line.end)) return false;
+  if (!start_line(sys, z0, plan0, natural)) {
+    line.end = natural.status == critical_status::unsupported_state ? line_end::unsupported_state
+                                                                    : line_end::no_natural_state;
+    return false;
+  }
   follow_from_natural(sys, ft_stop, scale, opt, outputs, z0, plan0, line);
   return true;
 }
