@@ -25,8 +25,9 @@ Sampled: states whose campaign status was 1 or 6 (given up) and that the re-run 
 with ``--since OLD.npz`` (an earlier re-run's ``recheck --save`` file) only those that OLD had not
 solved either, i.e. the states a solver change newly recovers; with ``--moved OLD.npz`` instead the
 states both solve with Fn more than 1e-10 apart (relative), i.e. the states a solver change moved
-(the re-run's, that is the gecko on PYTHONPATH, are checked). A state the route cannot settle in
-``--time-limit`` seconds (300 by default) counts as undecided.
+(the re-run's, that is the gecko on PYTHONPATH, are checked); with ``--turned OLD.npz`` the states
+both solve with Fn within 1e-10 and other turning-point counts (a path changed in place). A state
+the route cannot settle in ``--time-limit`` seconds (300 by default) counts as undecided.
 """
 from __future__ import annotations
 
@@ -154,6 +155,14 @@ def check(job):
     return out
 
 
+def _solved_in_both(old, now):
+    """States both re-runs solve (status 0 or 7), and their Fn's relative change."""
+    solved = np.isin(old["status"], (0, 7)) & np.isin(now["status"], (0, 7))
+    with np.errstate(invalid="ignore"):
+        rel = np.abs(old["Fn"] - now["Fn"]) / np.maximum(1.0, np.abs(old["Fn"]))
+    return solved, rel
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("npz")
@@ -165,6 +174,9 @@ def main(argv=None):
     ap.add_argument("--moved", default=None,
                     help="sample instead the states this earlier re-run (.npz) solved too (0 or 7), with Fn more "
                          "than 1e-10 (relative) from the re-run's: a solver change's moved states")
+    ap.add_argument("--turned", default=None,
+                    help="sample instead the states this earlier re-run (.npz) solved too, with Fn within 1e-10 "
+                         "(relative) of the re-run's but other turning-point counts: a path changed in place")
     ap.add_argument("--time-limit", type=float, default=300,
                     help="seconds per state before it counts as undecided (0: none)")
     a = ap.parse_args(argv)
@@ -175,10 +187,12 @@ def main(argv=None):
         given_up &= np.isin(np.load(a.since)["status"], (1, 6))
     if a.moved:
         old = np.load(a.moved)
-        solved = np.isin(old["status"], (0, 7)) & np.isin(now["status"], (0, 7))
-        with np.errstate(invalid="ignore"):
-            rel = np.abs(old["Fn"] - now["Fn"]) / np.maximum(1.0, np.abs(old["Fn"]))
+        solved, rel = _solved_in_both(old, now)
         given_up = solved & (rel > 1e-10)
+    if a.turned:
+        old = np.load(a.turned)
+        solved, rel = _solved_in_both(old, now)
+        given_up = solved & (rel <= 1e-10) & ((old["tpb"] != now["tpb"]) | (old["tps"] != now["tps"]))
     idx = np.argwhere(given_up)
     rng = np.random.default_rng(a.seed)
     pick = idx[rng.choice(len(idx), size=min(a.sample, len(idx)), replace=False)]
@@ -190,7 +204,7 @@ def main(argv=None):
     for r in results:
         verdicts[r["verdict"]] = verdicts.get(r["verdict"], 0) + 1
     decided = [r for r in results if "dFn_rel" in r]
-    summary = dict(npz=a.npz, since=a.since, moved=a.moved, time_limit=a.time_limit, recovered=int(given_up.sum()), sample=len(jobs), seed=a.seed, verdicts=verdicts,
+    summary = dict(npz=a.npz, since=a.since, moved=a.moved, turned=a.turned, time_limit=a.time_limit, recovered=int(given_up.sum()), sample=len(jobs), seed=a.seed, verdicts=verdicts,
                    max_dFn_rel=max((r["dFn_rel"] for r in decided), default=None),
                    max_dbeta=max((r["dbeta"] for r in decided), default=None),
                    longest_segment=max((max(r["elastic_lengths"]) for r in results), default=None),

@@ -163,6 +163,14 @@ CASES = [
                                  EA2=1175.383240544916, l1=1.0, l2=0.015299552565151316,
                                  alpha1=1.4289756157007119, alpha2=0.13038104532825864, w=1.0),
      [0.0, -35.1, -42.44250662834663]),
+    # campaign design 2840 at its Ft >= 0: the march in Ft from the stall reached Ft = 39.96 and its
+    # state was refused; solved since the test whether a path joins a limit state's ends looks no
+    # farther from the separatrix than a quarter of the nearer end's own f3, in long double
+    # (gecko/seta/detail/separatrix_limit.hpp, joining_distance)
+    ("joining_2840", dict(EI1=0.14451090840449854, EI2=0.8741230635762312, EA1=73850.32557084705,
+                          EA2=799.8279841391821, l1=1.0, l2=0.0012128223780860626, alpha1=1.2215087896352859,
+                          alpha2=0.3270547335484607, w=1.0),
+     [0.0, 39.95570367291479], "bracket"),
 ]
 AGREE = 1e-20
 

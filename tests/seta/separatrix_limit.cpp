@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <string>
 #include <vector>
@@ -334,6 +335,59 @@ TEST_CASE("the march goes on in arclength where its steps in Ft collapse", "[set
     INFO("Ft " << st.Ft << " status " << static_cast<int>(st.status));
     CHECK((st.status == gecko::critical_status::converged || st.status == gecko::critical_status::inadmissible));
   }
+}
+
+TEST_CASE("the joining test looks no farther from the separatrix than the nearer end's own f3", "[seta][separatrix]") {
+  // joining_distance (gecko/seta/detail/separatrix_limit.hpp): double keeps the fixed distance
+  // 2^-36 of the scale; a wider type starts from its own deeper one and shrinks it to a quarter of
+  // the nearer end's X3^2, down to a floor four bits above its rounding of the scale.
+  using gecko::detail::joining_distance;
+  CHECK(joining_distance(100.0, 1e-9, 3.0) == std::ldexp(100.0, -36));
+  CHECK(joining_distance(100.0, 5.0, 3.0) == std::ldexp(100.0, -36));
+  if (std::numeric_limits<long double>::digits <= std::numeric_limits<double>::digits) {
+    WARN("long double is no wider than double here");
+    return;
+  }
+  const long double scale = 100, fixed = std::ldexp(scale, gecko::detail::separatrix_resolved_exponent_of<long double>());
+  const long double floor = std::ldexp(scale, 4 - std::numeric_limits<long double>::digits);
+  CHECK(joining_distance<long double>(scale, 5, 3) == fixed);  // ends far from their saddle
+  CHECK(joining_distance<long double>(scale, 3, 1e-7L) == 1e-14L / 4);  // the joint rate 1e-7: f3 = 1e-14
+  CHECK(joining_distance<long double>(scale, -1e-7L, 3) == 1e-14L / 4);  // the sign does not matter
+  CHECK(joining_distance<long double>(scale, 0, 3) == floor);  // a turning point at an end
+  CHECK(joining_distance<long double>(scale, 3, 1e-7L) < fixed);
+}
+
+TEST_CASE("the march passes an end rate's zero that the fixed joining distance refused", "[seta][separatrix]") {
+  // Campaign design 3281 with the campaign's six Ft (the march's steps, and so where it stalls,
+  // depend on the requested targets): the long-double retry's march in arclength stalled at
+  // Ft = 998.1 with the beam's joint rate theta1'(l1) about 1e-9. At the fixed joining distance
+  // (2^-47 of the scale in long double) no libration reaches an end whose f3 lies below it, and
+  // every step was refused, so the three targets beyond were status 6. The joining test now looks
+  // no farther than a quarter of the nearer end's f3 (joining_distance). Their states are
+  // confirmed by the bracketing shot in arbitrary precision with gecko's path (Fn within 5e-17,
+  // validation/results/separatrix_joining_sample.json). Campaign design 2840 (joining_2840 of the
+  // reference table, whose values the first test case checks): the march in Ft reached
+  // Ft = 39.96 and its state was refused.
+  if (std::numeric_limits<long double>::digits <= std::numeric_limits<double>::digits) {
+    WARN("long double is no wider than double here: no retry");
+    return;
+  }
+  const gecko::TwoLevelSeta<double> s{48.148305992400786, 275.5524734909576, 32.39310507140628, 3745258.5838821772,
+                                      1.0, 0.09388918383797486, 1.1806949938740248, 0.22773892826447034, 1.0};
+  const std::vector<double> Ft{-2599.382431668891, 0.0, 941.1104576715811, 2308.615177535424, 2463.1928275896566,
+                               2734.1440386245185};
+  gecko::critical_line_options<double> o;
+  o.ft_end = Ft.back();
+  const auto line = gecko::critical_line(s, o);
+  CHECK(line.points.back().Ft < 998);  // the followed line stops before the march's stall
+  const auto got = gecko::critical_line_at(s, Ft);
+  for (std::size_t k = 3; k < Ft.size(); ++k) {
+    INFO("3281 Ft " << got[k].Ft << " status " << static_cast<int>(got[k].status));
+    CHECK((got[k].status == gecko::critical_status::converged || got[k].status == gecko::critical_status::inadmissible));
+  }
+  const auto g2 = gecko::critical_line_at(reference_design("joining_2840"), std::vector<double>{39.95570367291479});
+  INFO("2840 status " << static_cast<int>(g2[0].status));
+  CHECK(g2[0].status == gecko::critical_status::converged);
 }
 
 TEST_CASE("where the limit system does not converge at the line's last node, the march starts before it",

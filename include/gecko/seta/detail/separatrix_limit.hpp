@@ -195,9 +195,30 @@ inline bool segment_beside_separatrix(T EI, T c, T N, T psi_s, T sign_s, T psi_e
   return true;
 }
 
+// The distance from the separatrix at which limit_ends_joined looks for a path: the first measuring
+// distance 2^resolved of the scale |M| + N, but in a type wider than double no more than a quarter
+// of the nearer end's own f3 = X3^2 (its squared rate over f4, in M's units; a floor four bits above
+// the type's rounding of M). A libration at the distance d from the separatrix has f3 - d at the
+// ends, so it cannot reach an end whose f3 is below d, and the test judged the ends of an orbit the
+// end does not lie on. Where the march carried an end rate towards zero, it refused the steps
+// there: the long-double retry's march in arclength stalled at the 10,000-design re-run's 24 lines
+// with the joint rate near zero (6 pass now) and 33 with the base rate near zero (these now stop
+// closer, where the base reaches its saddle's orientation); and the march in Ft went on a way whose
+// targets' states were refused (17 targets solved now; validation/README.md, "End rates through
+// zero in the march"). Double keeps the fixed distance, so no state solved in double changes.
+template <class T>
+inline T joining_distance(T scale, T X3s, T X3e) {
+  T d = std::ldexp(scale, separatrix_resolved_exponent_of<T>());
+  if constexpr (wider_than_double<T>()) {
+    const T near = std::min(X3s * X3s, X3e * X3e) / 4;
+    if (near < d) d = std::max(near, std::ldexp(scale, 4 - std::numeric_limits<T>::digits));
+  }
+  return d;
+}
+
 // Whether every limit segment of `lim` at the state z has a path next to its separatrix, on
-// either side, that joins the state's ends with their rate signs (segment_beside_separatrix at the
-// first measuring distance). The limit system sees a beam's joint end only through v = sin(psi)
+// either side, that joins the state's ends with their rate signs (segment_beside_separatrix at
+// joining_distance). The limit system sees a beam's joint end only through v = sin(psi)
 // at the joint, even about the saddle psi = pi/2 (and its rate only squared), so next to the saddle
 // it has a mirror solution, the joint end as far past the saddle as it was short of it, beta moved
 // by about twice that, and the other equations nearly unchanged; no path joins the mirror's ends
@@ -215,7 +236,7 @@ inline bool limit_ends_joined(const separatrix_system<T, Policy, E1, E2>& lim,
   const auto g = make_seta_geometry<E1, E2>(d, z[0], z[1], z[2], z[3], Ft, edge, true);
   auto joined = [&](const auto& c, auto E, T EI, T cc, T ps, T X3s, T pe, T X3e) {
     constexpr bool Ext = decltype(E)::value;
-    const T da = std::ldexp(std::fabs(c.M) + c.N, separatrix_resolved_exponent_of<T>());
+    const T da = joining_distance(std::fabs(c.M) + c.N, X3s, X3e);
     const T ss = X3s >= 0 ? T(1) : T(-1), se = X3e >= 0 ? T(1) : T(-1);
     for (T side : {T(1), T(-1)}) {
       T length;
