@@ -351,10 +351,11 @@ TEST_CASE("the joining test looks no farther from the separatrix than the nearer
   const long double scale = 100, fixed = std::ldexp(scale, gecko::detail::separatrix_resolved_exponent_of<long double>());
   const long double floor = std::ldexp(scale, 4 - std::numeric_limits<long double>::digits);
   CHECK(joining_distance<long double>(scale, 5, 3) == fixed);  // ends far from their saddle
-  CHECK(joining_distance<long double>(scale, 3, 1e-7L) == 1e-14L / 4);  // the joint rate 1e-7: f3 = 1e-14
-  CHECK(joining_distance<long double>(scale, -1e-7L, 3) == 1e-14L / 4);  // the sign does not matter
+  const long double rate = 1e-7L, quarter = rate * rate / 4;  // the joint rate 1e-7: f3 = 1e-14
+  CHECK(joining_distance<long double>(scale, 3, rate) == quarter);
+  CHECK(joining_distance<long double>(scale, -rate, 3) == quarter);  // the sign does not matter
   CHECK(joining_distance<long double>(scale, 0, 3) == floor);  // a turning point at an end
-  CHECK(joining_distance<long double>(scale, 3, 1e-7L) < fixed);
+  CHECK(quarter < fixed);
 }
 
 TEST_CASE("the march passes an end rate's zero that the fixed joining distance refused", "[seta][separatrix]") {
