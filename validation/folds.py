@@ -29,14 +29,20 @@ limit).
    or fewer, their Fn within O(delta) of each other), and the nearest other root can be one of
    them rather than the fold's partner: then the gap does not follow the square root, and the
    verdict is undecided (validation/README.md, "Where the give-ups end").
+5. The parabola test (``--parabola``, ``fold_parabola``, ``parabola_verdict``; instead of 2 to 4):
+   gecko's states at 1e-3 to 1e-6 short of the fold follow the square-root law of a quadratic
+   fold (their differences fall by sqrt(10) per decade), the shot confirms them at 1e-4 and 1e-6
+   with their path, and at 1e-6 it finds the partner root on that path where the law puts it on
+   the returning branch. It names the partner by its predicted place and its path, which the pair
+   test's nearest other root could not.
 That the line, past the fold, comes back over its start is gecko's march alone; this check
 establishes the fold it turned at.
 
-The claims were made by a build whose march gave the targets beyond such a fold status 2; at three
-of the first six checked the shot found sign changes past the fold, and the march now stops there
-and leaves them status 6 (validation/README.md, "The separatrix march in arclength"). The states
-of a results file are checked again with ``--redo`` (the bisection takes status 6 beyond the fold
-as it took 2):
+A first build's march gave the targets beyond such a fold status 2; at three of the first six
+checked the sign count of 3 found sign changes past the fold, and the march stopped there and left
+them status 6 (validation/README.md, "The separatrix march in arclength"), until the parabola test
+(validation/README.md, "Targets past a turned-back march"). The states of a results file are
+checked again with ``--redo`` (the bisection takes status 6 beyond the fold as it takes 2):
 
     PYTHONPATH=python:. python3 -m validation.folds NEW.npz --since OLD.npz --sample 6 --seed 0 \\
         --json validation/results/folds_sample.json          (claims: status 2 in NEW, 1 or 6 in OLD)
@@ -44,6 +50,9 @@ as it took 2):
         --json validation/results/folds_redo.json                (before the pair test)
     PYTHONPATH=python:. python3 -m validation.folds --redo validation/results/folds_sample.json \\
         --time-limit 240 --json validation/results/folds_pair_redo.json   (with it)
+    PYTHONPATH=python:. python3 -m validation.folds validation/rerun_turned.npz \\
+        --since validation/rerun_joining.npz --parabola --sample 12 --seed 0 --time-limit 120 \\
+        --json validation/results/folds_parabola_sample.json      (the parabola test)
 """
 from __future__ import annotations
 
@@ -139,18 +148,154 @@ def pair_verdict(pairs):
     return "fold_confirmed" if want / 2 <= ratio <= want * 2 else "undecided"
 
 
-def check(d, Ft_claim, limit):
-    import gecko
-    from mpmath import mp, mpf
-    import seta_separatrix_mp as ssm
+PARABOLA_ETAS = (1e-3, 1e-4, 1e-5, 1e-6)  # distances short of the fold, relative to max(1, |Ft_fold|)
+CONFIRM_ETAS = (1e-4, 1e-6)  # where the shot confirms gecko's state
+PARTNER_ETA = 1e-6           # where it looks for the partner root the parabola predicts
+PARTNER_GRID = 21            # shots across the partner's window, B -+ a tenth of the gap
 
+
+def sqrt_law(A, etas):
+    """The fold's local law from gecko's states A at the distances etas (a decade apart): at a
+    quadratic fold Fn = Ff + c x + e x^2 + f x^3 + ... with x = sqrt(eta), so the successive
+    differences of A fall by sqrt(10) = 3.16 per decade (by 10 where the line has a finite slope
+    and goes on). Returns the ratios and (Ff, c, e, f) through the four states. The partner on the
+    returning branch is Ff - c x + e x^2 - f x^3 (the even terms are the two branches' common
+    part)."""
+    diffs = [A[k] - A[k + 1] for k in range(len(A) - 1)]
+    ratios = [diffs[k] / diffs[k + 1] if diffs[k + 1] != 0 else float("inf") for k in range(len(diffs) - 1)]
+    x = np.sqrt(np.array(etas))
+    M = np.stack([x ** k for k in range(len(A))], axis=1)
+    return ratios, [float(v) for v in np.linalg.solve(M, np.array(A))]
+
+
+def _root_path(r):
+    return None if r is None else dict(Fn=float(r["Fn"]), q=float(r["q"]), turns=[int(t) for t in r["turns"]])
+
+
+def partner_roots(d, Ft, B, gap, length, limit):
+    """The shot's roots in B -+ gap/10 at Ft: signs on PARTNER_GRID points, each sign change
+    bisected to its root with its path (bracket_route). Next to a long segment the shot's residual
+    jumps by 2 pi where its path changes (a loop more or fewer), so a root can sit between two
+    points of one sign; the grid takes those it sees."""
+    import seta_separatrix_mp as ssm
+    shoot = ssm._bracket(d, Ft, B, length, 1e-11)[0]
+    xs = np.linspace(B - 0.1 * gap, B + 0.1 * gap, PARTNER_GRID)
+    sg = time_limited(limit, _signs, shoot, xs)
+    roots = []
+    for k in range(len(xs) - 1):
+        if sg[k] != sg[k + 1]:
+            m, half = 0.5 * (xs[k] + xs[k + 1]), 0.5 * (xs[k + 1] - xs[k])
+            r = time_limited(limit, ssm.bracket_route, d, Ft, m, length, span_rel=half / max(1.0, abs(m)))
+            if r is not None:
+                roots.append(_root_path(r))
+    return roots
+
+
+def fold_parabola(d, seta, lo, hi, limit):
+    """The fold as a parabola of the line, with the partner on the returning branch where it
+    predicts. gecko's states A at PARABOLA_ETAS short of the fold [lo, hi] (in units of
+    max(1, |Ft_fold|)), one call each, and their square-root law (sqrt_law: ratios within 10 % of
+    sqrt(10)); at CONFIRM_ETAS the bracketing shot in arbitrary precision confirms A (a root within
+    1e-11 of it, with its path: turning points and base rate); at PARTNER_ETA it looks for the
+    partner root where the parabola puts it (partner_roots). Where the line goes on past a point
+    instead of folding, the differences fall by 10 per decade and nothing predicts a root there."""
+    import seta_separatrix_mp as ssm
+    scale = max(1.0, abs(hi))
+    sgn = 1.0 if hi > 0 else -1.0
+    Ff_t = 0.5 * (lo + hi)
+    out = dict(etas=list(PARABOLA_ETAS), A=[], Ft_before=[])
+    for eta in PARABOLA_ETAS:
+        before = lo - sgn * eta * scale
+        line = seta.critical_line(Ft=[before], errors="nan")
+        if int(line.status[0]) not in (0, 7):
+            out["why"] = f"no state at {eta:g} short of the fold"
+            return out
+        out["A"].append(float(line.Fn[0]))
+        out["Ft_before"].append(before)
+    etas = [abs(f - Ff_t) / scale for f in out["Ft_before"]]
+    ratios, coef = sqrt_law(out["A"], etas)
+    out.update(ratios=ratios, Fn_fold=coef[0], coefficients=coef)
+    out["sqrt_law"] = all(abs(r / math.sqrt(10) - 1) <= 0.1 for r in ratios)
+    out["confirm"] = []
+    for eta in CONFIRM_ETAS:
+        k = PARABOLA_ETAS.index(eta)
+        Ft_b, A = out["Ft_before"][k], out["A"][k]
+        L1, L2 = ssm.saddle_lengths(d, math.hypot(A, Ft_b))
+        r = time_limited(limit, ssm.bracket_route, d, Ft_b, A, L1 + L2)
+        out["confirm"].append(dict(eta=eta, Ft=Ft_b, A=A, lengths=[round(L1, 1), round(L2, 1)], A_root=_root_path(r)))
+    k = PARABOLA_ETAS.index(PARTNER_ETA)
+    Ft_b, A = out["Ft_before"][k], out["A"][k]
+    x = math.sqrt(etas[k])
+    B = coef[0] - coef[1] * x + coef[2] * x ** 2 - coef[3] * x ** 3
+    gap = abs(A - B)
+    L1, L2 = ssm.saddle_lengths(d, math.hypot(B, Ft_b))
+    out["partner"] = dict(eta=PARTNER_ETA, Ft=Ft_b, B_predicted=B, gap=gap,
+                          roots=partner_roots(d, Ft_b, B, gap, L1 + L2, limit))
+    return out
+
+
+def same_path(a, b):
+    return a is not None and b is not None and a["turns"] == b["turns"] and (a["q"] > 0) == (b["q"] > 0)
+
+
+def parabola_verdict(p):
+    """fold_confirmed where gecko's states follow the square-root law, the shot confirms them at
+    CONFIRM_ETAS, and at PARTNER_ETA it has a root on their path (turning points, sign of the base
+    rate) within a twentieth of the gap from where the parabola puts the partner; no_fold where the
+    differences fall as a finite slope's (ratios within 10 % of 10); else undecided."""
+    if "ratios" not in p:
+        return "undecided"
+    if all(abs(r / 10 - 1) <= 0.1 for r in p["ratios"]):
+        return "no_fold"
+    if not p["sqrt_law"]:
+        return "undecided"
+    conf = p["confirm"]
+    if not all(c["A_root"] is not None and abs(c["A_root"]["Fn"] - c["A"]) <= 1e-11 * max(1.0, abs(c["A"]))
+               for c in conf):
+        return "undecided"
+    path = conf[-1]["A_root"]
+    part = p["partner"]
+    near = [r for r in part["roots"] if same_path(r, path) and abs(r["Fn"] - part["B_predicted"]) <= part["gap"] / 20]
+    return "fold_confirmed" if near else "undecided"
+
+
+def _fold_of(d, Ft_claim):
+    """The claim's record, gecko's seta and the fold's bracket (None, the record saying why, where
+    the bisection met another status)."""
+    import gecko
     out = dict(Ft=float(Ft_claim))
-    t = time.time()
     seta = gecko.TwoLevelSeta(**d)
     b = fold_ft(seta, Ft_claim)
     if b is None:
-        out["verdict"] = "undecided"
-        out["why"] = "bisection met a status other than 0, 7, 2 or 6"
+        out.update(verdict="undecided", why="bisection met a status other than 0, 7, 2 or 6")
+    return out, seta, b
+
+
+def check_parabola(d, Ft_claim, limit):
+    """The parabola test alone (fold_parabola), after the fold's bisection on gecko's status."""
+    t = time.time()
+    out, seta, b = _fold_of(d, Ft_claim)
+    if b is None:
+        return out
+    out["fold"] = list(b)
+    try:
+        p = fold_parabola(d, seta, b[0], b[1], limit)
+    except TimeLimit:
+        out.update(verdict="undecided", why=f"time limit ({limit} s)")
+        return out
+    out["parabola"] = p
+    out["verdict"] = parabola_verdict(p)
+    out["seconds"] = round(time.time() - t, 1)
+    return out
+
+
+def check(d, Ft_claim, limit):
+    from mpmath import mp, mpf
+    import seta_separatrix_mp as ssm
+
+    t = time.time()
+    out, seta, b = _fold_of(d, Ft_claim)
+    if b is None:
         return out
     lo, hi = b
     scale = max(1.0, abs(hi))
@@ -203,6 +348,10 @@ def main(argv=None):
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--time-limit", type=float, default=120.0)
     ap.add_argument("--json", default=None)
+    ap.add_argument("--design", type=int, action="append", default=None,
+                    help="only this campaign design's claims (repeatable)")
+    ap.add_argument("--parabola", action="store_true",
+                    help="the parabola test alone (fold_parabola), instead of the sign count and pair test")
     a = ap.parse_args(argv)
     if a.redo:
         with open(a.redo) as f:
@@ -214,6 +363,8 @@ def main(argv=None):
     else:
         new, old = np.load(a.npz), np.load(a.since)
         claims = (new["status"] == 2) & np.isin(old["status"], (1, 6))
+        if a.design:
+            claims &= np.isin(np.arange(len(claims)), a.design)[:, None]
         idx = np.argwhere(claims)
         rng = np.random.default_rng(a.seed)
         pick = idx[rng.choice(len(idx), size=min(a.sample, len(idx)), replace=False)] if len(idx) else idx
@@ -224,14 +375,14 @@ def main(argv=None):
     states, verdicts, pair_verdicts = [], {}, {}
     for i, Ft in jobs:
         d = dict(zip(campaign.FIELDS, map(float, designs[i])))
-        r = check(d, Ft, a.time_limit)
+        r = (check_parabola if a.parabola else check)(d, Ft, a.time_limit)
         r["design"] = int(i)
         states.append(r)
         verdicts[r["verdict"]] = verdicts.get(r["verdict"], 0) + 1
         if "pair_verdict" in r:
             pair_verdicts[r["pair_verdict"]] = pair_verdicts.get(r["pair_verdict"], 0) + 1
         print(json.dumps(r), flush=True)
-    summary = dict(npz=a.npz, since=a.since, redo=a.redo, claims=claims_count, sample=len(states), seed=a.seed,
+    summary = dict(npz=a.npz, since=a.since, redo=a.redo, parabola=a.parabola, claims=claims_count, sample=len(states), seed=a.seed,
                    time_limit=a.time_limit, verdicts=verdicts, pair_verdicts=pair_verdicts, seconds=round(time.time() - t0, 1), states=states)
     text = json.dumps(summary, indent=1)
     if a.json:

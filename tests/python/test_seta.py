@@ -205,8 +205,10 @@ def test_mixed_signs_equal_each_direction_alone():
     # positive and negative Ft: each direction's states are bit for bit those of a call with that
     # direction's targets alone. Designs: the reference; campaign design 67, whose followed line
     # never leaves Ft = 0 (its positive targets are solved on the separatrix limit, its negative
-    # one is given up); campaign design 1005, whose positive targets are solved by the long-double
-    # retry of give-ups (tests/data/seta_separatrix_reference.csv, long_double_1005).
+    # one lies past a fold where the long-double retry's march turns back: status 2); campaign
+    # design 1005, whose positive targets are solved by the long-double retry of give-ups
+    # (tests/data/seta_separatrix_reference.csv, long_double_1005); campaign design 949, whose
+    # negative target is given up (status 6).
     cases = [
         (gecko.TwoLevelSeta(), [-3.0, 0.0, 2.0, -0.5, 9.0]),
         (gecko.TwoLevelSeta(EI1=0.21555292182338973, EI2=43.0027243533097, EA1=64.20496458992673,
@@ -217,6 +219,10 @@ def test_mixed_signs_equal_each_direction_alone():
                             EA2=87772.04693377482, l1=1.0, l2=0.09695729933128887,
                             alpha1=1.006282082105714, alpha2=0.2716690124304871, w=1.0),
          [-116.02457981371899, 0.0, 164.2456444511225, 210.259320846518, 377.08184261870156]),
+        (gecko.TwoLevelSeta(EI1=2.897851045953516, EI2=365.9287441863494, EA1=3.4236860772071642,
+                            EA2=257283.5563511228, l1=1.0, l2=0.0032178833728294764,
+                            alpha1=1.1336563374587927, alpha2=0.394973818164146, w=1.0),
+         [-214.31980986098, 0.0, 521.5352044807915, 315.9429609644715, 645.6000009981559]),
     ]
     fields = ("Fn", "theta_joint", "status", "turning_points_beam", "turning_points_spatula",
               "theta_rate_joint", "theta_rate_base", "min_z")
@@ -229,7 +235,7 @@ def test_mixed_signs_equal_each_direction_alone():
             alone = seta.critical_line(Ft=ft[part], errors="nan")
             for f in fields:
                 np.testing.assert_array_equal(getattr(both, f)[part], getattr(alone, f), err_msg=f)
-    assert {0, 6} <= statuses  # solved states and a give-up are both compared
+    assert {0, 2, 6} <= statuses  # solved states, a claim past a fold and a give-up are all compared
     fiber = gecko.SingleFiber()
     ft = np.array([-2.0, 0.0, 5.0, -0.25, 9.9])
     both = fiber.critical_line(Ft=ft)
@@ -241,16 +247,18 @@ def test_mixed_signs_equal_each_direction_alone():
 
 @pytest.mark.skipif(np.finfo(np.longdouble).nmant <= np.finfo(np.float64).nmant,
                     reason="the retry of give-ups runs only where long double is wider than double")
-def test_retry_reports_a_line_given_up_as_status_6_not_1():
+def test_retry_reports_the_line_it_followed_not_status_1():
     # Campaign design 7775: double's homotopy to the natural state gives up (status 1 everywhere);
     # the long-double retry finds it and solves Ft = 0 and the positive targets, and its line
-    # towards negative Ft stops before Ft = -504.93. That target is status 6 (the line from Ft = 0
-    # exists and was given up on the way), as the retry's line says; it was status 1.
+    # towards negative Ft turns back at a fold before Ft = -504.93 (its separatrix march in
+    # arclength comes back over Ft = 0). That target is status 2 (not on the line from Ft = 0), as
+    # the retry's line says; it was status 1, and then 6 while the march claimed nothing past a
+    # fold (validation/README.md, "Targets past a turned-back march").
     seta = gecko.TwoLevelSeta(EI1=0.10080516101182974, EI2=8.879466999540858, EA1=4.2413084413714754,
                               EA2=571589.1012556991, l1=1.0, l2=0.02122973292440997,
                               alpha1=0.1667794760138022, alpha2=1.2463937247486194, w=1.0)
     line = seta.critical_line(Ft=[-504.92748189, 0.0, 38.97285313], errors="nan")
-    np.testing.assert_array_equal(line.status, [6, 0, 0])
+    np.testing.assert_array_equal(line.status, [2, 0, 0])
     assert np.isnan(line.Fn[0]) and line.Fn[1] == pytest.approx(-59.49229976, rel=1e-9)
 
 

@@ -452,3 +452,40 @@ def test_folds_pair_verdict_wants_a_partner_that_closes_as_the_square_root():
     assert folds.pair_verdict([pair(1e-4, 3e-3), pair(1e-6, 3e-4, past=3)]) == "root_past_fold"
     assert folds.pair_verdict([pair(1e-4, 3e-3), pair(1e-6, 3e-4, found=False)]) == "undecided"
     assert folds.pair_verdict([pair(1e-4, 3e-3), None]) == "undecided"
+
+
+def test_folds_parabola_law_and_verdict_on_a_made_fold_and_injected_failures():
+    # validation/folds.py's parabola test: gecko's states short of a quadratic fold follow
+    # Fn = Ff + c x + e x^2 + f x^3 (x = sqrt(distance)), whose differences fall by sqrt(10) per
+    # decade; a line that goes on with a finite slope falls by 10. The partner predicted on the
+    # returning branch, Ff - c x + e x^2 - f x^3, must be a shot root on A's path. Injected
+    # failures: a finite slope, an unconfirmed state, a partner on another path or too far away.
+    import math
+
+    from validation import folds
+
+    etas = list(folds.PARABOLA_ETAS)
+    Ff, c, e, f = 14.36, -317.3, 0.54, 96.9  # design 7529's fold (validation/README.md)
+    A = [Ff + c * math.sqrt(t) + e * t + f * t ** 1.5 for t in etas]
+    ratios, coef = folds.sqrt_law(A, etas)
+    assert all(abs(r - math.sqrt(10)) < 0.05 for r in ratios)
+    assert max(abs(a - b) for a, b in zip(coef, (Ff, c, e, f))) < 1e-6 * abs(c)
+    x = math.sqrt(folds.PARTNER_ETA)
+    B = Ff - c * x + e * x * x - f * x ** 3
+    gap = abs(A[-1] - B)
+    path = dict(Fn=A[-1], q=-64.2, turns=[1, 0])
+
+    def made(ratios=ratios, confirmed=True, partner=dict(Fn=B + gap / 40, q=-64.1, turns=[1, 0])):
+        conf = [dict(eta=t, A=A[etas.index(t)], A_root=dict(path, Fn=A[etas.index(t)]) if confirmed else None)
+                for t in folds.CONFIRM_ETAS]
+        return dict(ratios=ratios, sqrt_law=all(abs(r / math.sqrt(10) - 1) <= 0.1 for r in ratios), confirm=conf,
+                    partner=dict(B_predicted=B, gap=gap, roots=[partner]))
+
+    assert folds.parabola_verdict(made()) == "fold_confirmed"
+    lin = [1.0 - 2.0 * t for t in etas]
+    assert folds.parabola_verdict(made(ratios=folds.sqrt_law(lin, etas)[0])) == "no_fold"
+    assert folds.parabola_verdict(made(confirmed=False)) == "undecided"
+    assert folds.parabola_verdict(made(partner=dict(Fn=B, q=-64.1, turns=[3, 0]))) == "undecided"  # 7581-like
+    assert folds.parabola_verdict(made(partner=dict(Fn=B, q=+64.1, turns=[1, 0]))) == "undecided"
+    assert folds.parabola_verdict(made(partner=dict(Fn=B + gap / 10, q=-64.1, turns=[1, 0]))) == "undecided"
+    assert folds.parabola_verdict(dict(A=[1.0])) == "undecided"

@@ -128,8 +128,9 @@ inline void critical_line_at_imp(const TwoLevelSeta<T>& s, const T* Ft, std::siz
 // goes on in arclength where its steps in Ft collapse (separatrix_arclength.hpp), and so does the
 // natural state's march in lambda (natural_state.hpp). Only a converged or inadmissible answer
 // replaces the double one; where double gave up with status 1, also an unsupported one (status 3)
-// or a line given up before the target (status 6): any other status of the retry leaves the
-// give-up as it was. States solved in double are not touched.
+// or a line given up before the target (status 6); and a line that turned back before the target
+// (status 2, beyond the line): any other status of the retry leaves the give-up as it was. States
+// solved in double are not touched.
 template <class Policy, bool E1, bool E2>
 inline void retry_in_long_double(const TwoLevelSeta<double>& s, const double* Ft, std::size_t count,
                                  const critical_line_options<double>& opt, critical_state<double>* out) {
@@ -168,9 +169,18 @@ inline void retry_in_long_double(const TwoLevelSeta<double>& s, const double* Ft
     // there): a state beyond what the model represents, status 3 as in double. Or it finds the
     // natural state and its line stops before this Ft: status 6, the line from Ft = 0 exists and
     // was given up on the way, not "Newton did not converge" (design 7775 of the 10,000-design
-    // re-run, whose other Ft the retry solves).
+    // re-run, whose other Ft the retry solves, was such a state until the march in arclength
+    // claimed the targets past a turned-back fold: it is status 2 now, below).
     if ((r.status == critical_status::unsupported_state || r.status == critical_status::not_reached) &&
         o.status == critical_status::not_converged) {
+      o.status = r.status;
+      o.iterations = r.iterations;
+      continue;
+    }
+    // The retry's line turned back short of this Ft after a fold (its separatrix march in
+    // arclength came back over Ft = 0, separatrix_arclength.hpp): no critical state on the line,
+    // as where double's own line turns back.
+    if (r.status == critical_status::no_critical_state) {
       o.status = r.status;
       o.iterations = r.iterations;
       continue;

@@ -9,7 +9,12 @@
 // followed line does), through folds. A target is the line's first crossing of its Ft, as for the
 // followed line (detail/line_output.hpp): it is taken where the march passes beyond all the Ft it
 // has reached before. A march that comes back over the line's start after a fold has turned back,
-// as a followed line can (line_end::turned_back), and stops there; its targets stay not reached.
+// as a followed line can (line_end::turned_back), and stops there: the targets it has not reached
+// then have no critical state on the line (status 2), as beyond a followed line that turned back.
+// The fold behind each such claim is checked in arbitrary precision by validation/folds.py (the
+// line's own states short of the fold confirmed by the bracketing shot, their square-root law, and
+// the partner root it predicts on the returning branch; validation/README.md, "Targets past a
+// turned-back march").
 // Only the long-double retry of give-ups marches in arclength (critical_line.hpp). Run in double,
 // it reached states that the retry had reached before on another path: campaign design 162 has two
 // critical states at Ft = 1250.04, 0.78 % apart in Fn, with theta1'(0) of opposite signs and 2 or 1
@@ -76,12 +81,13 @@ inline bool correct_limit_state(const separatrix_system<T, Policy, E1, E2>& lim,
 // state), where a march that turned back stops; line_tangent: the followed line's last tangent,
 // the direction where the march in Ft took no step. Each target crossed beyond the reach so far is
 // solved at its Ft from the chord between the two states around it and accepted where
-// separatrix_target_state holds.
+// separatrix_target_state holds. True where the march turned back: the targets from `next` on are
+// beyond the line (the caller gives them status 2).
 template <class T, class Policy, bool E1, bool E2>
-inline void march_limit_in_arclength(const seta_system<T, Policy, E1, E2>& sys, limit_march<T, Policy, E1, E2>& m,
+inline bool march_limit_in_arclength(const seta_system<T, Policy, E1, E2>& sys, limit_march<T, Policy, E1, E2>& m,
                                      const Eigen::Matrix<T, 5, 1>& line_tangent, T mu0, T dir, T mu_start, T scale,
                                      T mtol, T tol, const std::vector<std::pair<T, std::size_t>>& targets,
-                                     std::size_t next, const T* Ft, const int expected[2], critical_state<T>* out) {
+                                     std::size_t& next, const T* Ft, const int expected[2], critical_state<T>* out) {
   using std::fabs;
   using vec = typename seta_system<T, Policy, E1, E2>::vec;
   using xvec = Eigen::Matrix<T, 5, 1>;
@@ -93,7 +99,7 @@ inline void march_limit_in_arclength(const seta_system<T, Policy, E1, E2>& sys, 
   t_prev[4] = m.mu - m.mu_prev;
   if (!(t_prev[4] * dir > 0)) t_prev = line_tangent * (line_tangent[4] * dir < 0 ? T(-1) : T(1));
   t_prev.normalize();
-  if (!t_prev.allFinite() || !tangent_at(lim, m.z, m.mu, m.plan, t_prev, t)) return;
+  if (!t_prev.allFinite() || !tangent_at(lim, m.z, m.mu, m.plan, t_prev, t)) return false;
   const T ds_min = T(1e-9) * scale, ds_max = T(0.04) * scale;
   T ds = T(1e-3) * scale;
   T reach = m.mu;  // the farthest mu along dir that the line has reached
@@ -112,7 +118,7 @@ inline void march_limit_in_arclength(const seta_system<T, Policy, E1, E2>& sys, 
     ok = ok && tangent_at(lim, zc, xc[4], pc, t, tn);
     if (!ok) {
       ds /= 2;
-      if (ds < ds_min) return;
+      if (ds < ds_min) return false;
       continue;
     }
     if (tn[4] * t[4] < 0) ++folds;
@@ -132,19 +138,17 @@ inline void march_limit_in_arclength(const seta_system<T, Policy, E1, E2>& sys, 
     T lengths[2], gaps[2];
     separatrix_measures(sys, m.z, m.mu, lengths, gaps);
     for (int k = 0; k < 2; ++k)
-      if ((lim.mask >> k & 1) && !(lengths[k] >= T(separatrix_long_segment))) return;
+      if ((lim.mask >> k & 1) && !(lengths[k] >= T(separatrix_long_segment))) return false;
     const int grew = grow_limit_segments(lim, lengths, gaps, m.z, m.mu, m.plan, mtol, m.iterations, m.joined);
-    if (grew < 0) return;
+    if (grew < 0) return false;
     if (grew > 0) {
       x.template head<4>() = m.z;
-      if (!tangent_at(lim, m.z, m.mu, m.plan, t, tn)) return;
+      if (!tangent_at(lim, m.z, m.mu, m.plan, t, tn)) return false;
       t = tn;
     }
-    // Back over the line's start after a fold: the line has turned back (detail/continuation.hpp),
-    // and the march stops. Its targets stay not reached rather than get "no critical state": of six
-    // such folds checked in arbitrary precision, the shot found sign changes just past the fold near
-    // the folded branch at three (validation/README.md, "The separatrix march in arclength").
-    if (folds > 0 && (m.mu - mu_start) * dir < -T(1e-3) * scale) return;
+    // Back over the line's start after a fold: the line has turned back (detail/continuation.hpp,
+    // the same test as the followed line's), and the march stops.
+    if (folds > 0 && (m.mu - mu_start) * dir < -T(1e-3) * scale) return true;
     if (!((m.mu - reach) * dir > 0)) continue;
     // Targets first crossed on this step: between the reach and the new state (the step starts at
     // or short of the reach, so its mu changed), from the chord between its ends.
@@ -166,6 +170,7 @@ inline void march_limit_in_arclength(const seta_system<T, Policy, E1, E2>& sys, 
     }
     reach = m.mu;
   }
+  return false;
 }
 
 }  // namespace detail

@@ -141,8 +141,10 @@ inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
   // at by Newton in Ft): go on in arclength where asked (detail/separatrix_arclength.hpp).
   if (arclength && collapsed && next < targets.size()) {
     limit_march<T, Policy, E1, E2> m{lim, z, z_prev, mu, mu_prev, plan, joined};
-    march_limit_in_arclength(sys, m, last.tangent, mu0, dir, line.nodes.front().Ft, scale, mtol, tol, targets, next,
-                             Ft, expected, out);
+    // A march that turned back: the targets beyond its reach have no critical state on the line.
+    if (march_limit_in_arclength(sys, m, last.tangent, mu0, dir, line.nodes.front().Ft, scale, mtol, tol, targets,
+                                 next, Ft, expected, out))
+      for (; next < targets.size(); ++next) out[targets[next].second].status = critical_status::no_critical_state;
   }
 }
 
