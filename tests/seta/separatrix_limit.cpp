@@ -452,6 +452,29 @@ TEST_CASE("a march that comes back over the line's start after a fold has turned
   CHECK(std::isnan(got[2].Fn));
 }
 
+TEST_CASE("a line that stopped inside what it covered after a fold goes on in arclength from where it stopped",
+          "[seta][separatrix]") {
+  // The followed line towards negative Ft folds, heads back towards Ft = 0 and stalls there, inside
+  // the range it covered: the targets beyond its fold were status 6. The long-double retry marches
+  // from the stall along the line's own tangent on the separatrix limit: design 3681's march comes
+  // back over Ft = 0 (turned back: status 2 beyond the fold), design 5337's folds again and first
+  // crosses its target beyond the reach (solved). validation/README.md, "Lines stopped inside what
+  // they covered".
+  const gecko::TwoLevelSeta<double> back{0.18036420956375876, 2.107798904215288, 22.771200077804355, 5136996.937218147,
+                                         1.0, 0.6589906301828736, 1.3374094040535764, 0.21820611143038066, 1.0};
+  const auto b = gecko::critical_line_at(back, std::vector<double>{-2032.3327476392599, 0.0, 343.882524615205});
+  CHECK(b[0].status == gecko::critical_status::no_critical_state);
+  CHECK(b[1].status == gecko::critical_status::converged);
+  CHECK(b[2].status == gecko::critical_status::converged);
+  const gecko::TwoLevelSeta<double> again{0.18077370510251417, 8.717498902956999, 60597545.05091903,
+                                          1021098.9831846402, 1.0, 0.028367338862926743, 1.243719999639823,
+                                          0.2886957547132285, 1.0};
+  const auto a = gecko::critical_line_at(again, std::vector<double>{-848.8259027544344, 0.0});
+  INFO("status " << static_cast<int>(a[0].status) << " Fn " << a[0].Fn);
+  CHECK((a[0].status == gecko::critical_status::converged || a[0].status == gecko::critical_status::inadmissible));
+  CHECK(a[1].status == gecko::critical_status::converged);
+}
+
 TEST_CASE("no design derivatives where the state does not resolve its separatrix distance", "[seta][separatrix]") {
   const auto s = design_27();
   const auto d = gecko::sensitivities(s, std::vector<double>{100.0, 1000.0});

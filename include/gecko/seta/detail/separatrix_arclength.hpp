@@ -82,12 +82,15 @@ inline bool correct_limit_state(const separatrix_system<T, Policy, E1, E2>& lim,
 // the direction where the march in Ft took no step. Each target crossed beyond the reach so far is
 // solved at its Ft from the chord between the two states around it and accepted where
 // separatrix_target_state holds. True where the march turned back: the targets from `next` on are
-// beyond the line (the caller gives them status 2).
+// beyond the line (the caller gives them status 2). folds0 > 0: the line had passed that many
+// folds and stopped inside what it covered; the march goes on along line_tangent as it is oriented
+// (the line's own way, which may lead back towards its start), and the reach so far is mu0.
 template <class T, class Policy, bool E1, bool E2>
 inline bool march_limit_in_arclength(const seta_system<T, Policy, E1, E2>& sys, limit_march<T, Policy, E1, E2>& m,
                                      const Eigen::Matrix<T, 5, 1>& line_tangent, T mu0, T dir, T mu_start, T scale,
                                      T mtol, T tol, const std::vector<std::pair<T, std::size_t>>& targets,
-                                     std::size_t& next, const T* Ft, const int expected[2], critical_state<T>* out) {
+                                     std::size_t& next, const T* Ft, const int expected[2], critical_state<T>* out,
+                                     int folds0 = 0) {
   using std::fabs;
   using vec = typename seta_system<T, Policy, E1, E2>::vec;
   using xvec = Eigen::Matrix<T, 5, 1>;
@@ -97,13 +100,14 @@ inline bool march_limit_in_arclength(const seta_system<T, Policy, E1, E2>& sys, 
   x[4] = m.mu;
   t_prev.template head<4>() = m.z - m.z_prev;
   t_prev[4] = m.mu - m.mu_prev;
-  if (!(t_prev[4] * dir > 0)) t_prev = line_tangent * (line_tangent[4] * dir < 0 ? T(-1) : T(1));
+  if (folds0 > 0) t_prev = line_tangent;
+  else if (!(t_prev[4] * dir > 0)) t_prev = line_tangent * (line_tangent[4] * dir < 0 ? T(-1) : T(1));
   t_prev.normalize();
   if (!t_prev.allFinite() || !tangent_at(lim, m.z, m.mu, m.plan, t_prev, t)) return false;
   const T ds_min = T(1e-9) * scale, ds_max = T(0.04) * scale;
   T ds = T(1e-3) * scale;
-  T reach = m.mu;  // the farthest mu along dir that the line has reached
-  int folds = 0;
+  T reach = folds0 > 0 ? mu0 : m.mu;  // the farthest mu along dir that the line has reached
+  int folds = folds0;
   for (int step = 0; step < 4000 && next < targets.size(); ++step) {
     xvec xc = x + ds * t;
     seta_plan pc = m.plan;

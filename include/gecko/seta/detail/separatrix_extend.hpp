@@ -43,7 +43,8 @@ inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
   const auto& last = line.nodes.back();
   const T mu0 = last.Ft;
   // The line must stop at the far end of what it covered (else the targets beyond were passed by
-  // another part of it, and the first crossing is not the limit's).
+  // another part of it, and the first crossing is not the limit's), except for the march in
+  // arclength from inside that range (below).
   T lo = mu0, hi = mu0;
   for (const auto& nd : line.nodes) {
     lo = std::min(lo, nd.Ft);
@@ -51,13 +52,20 @@ inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
   }
   // A line that never left its start goes the way it was followed.
   const T dir = line.nodes.size() == 1 ? T(line.direction) : (mu0 == hi ? T(1) : (mu0 == lo ? T(-1) : T(0)));
-  if (dir == 0) return;
+  // A line that stopped inside what it covered, after a fold, is continued in arclength from
+  // where it stopped, along its own tangent (in the march in arclength only, below): its targets
+  // lie beyond the farthest Ft it reached the way it was followed (`from`), and a march that comes
+  // back over the line's start has turned back.
+  const bool inside = dir == 0;
+  if (inside && !(arclength && wider_than_double<T>() && last.branch > 0)) return;
+  const T tdir = inside ? T(line.direction) : dir;
+  const T from = inside ? (tdir > 0 ? hi : lo) : mu0;
   std::vector<std::pair<T, std::size_t>> targets;
   for (std::size_t k = 0; k < count; ++k) {
     const std::size_t i = which[k];
     if (out[i].status != critical_status::not_reached) continue;
     const T mu = line_parameter(sys, Ft[i]);
-    if ((mu - mu0) * dir > 0) targets.push_back({(mu - mu0) * dir, i});
+    if ((mu - from) * tdir > 0) targets.push_back({(mu - from) * tdir, i});
   }
   if (targets.empty()) return;
   std::sort(targets.begin(), targets.end());
@@ -79,10 +87,11 @@ inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
   // give-ups end"). mu_first: where the march starts.
   T mu_first = mu0;
   bool started = solve_separatrix(lim, z, mu0, plan, mtol, its);
+  const T along = inside ? (last.tangent[4] > 0 ? T(1) : T(-1)) : dir;  // the line's way at its last node
   if (!started && wider_than_double<T>()) {
     for (std::size_t back = 1; back <= 5 && back < line.nodes.size() && !started; ++back) {
       const auto& node = line.nodes[line.nodes.size() - 1 - back];
-      if (node.branch != last.branch || !((mu0 - node.Ft) * dir > 0)) break;
+      if (node.branch != last.branch || !((mu0 - node.Ft) * along > 0)) break;
       z = node.z;
       mu_first = node.Ft;
       plan = lim.plan(z, mu_first);
@@ -95,11 +104,18 @@ inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
   // step to ends that none joins otherwise has jumped to the limit system's mirror solution and is
   // retried shorter (keep_ends_joined).
   bool joined = limit_ends_joined(lim, z, mu_first);
+  std::size_t next = 0;
+  if (inside) {
+    limit_march<T, Policy, E1, E2> m{lim, z, z, mu_first, mu_first, plan, joined};
+    if (march_limit_in_arclength(sys, m, last.tangent, from, tdir, line.nodes.front().Ft, scale, mtol, tol, targets,
+                                 next, Ft, expected, out, last.branch))
+      for (; next < targets.size(); ++next) out[targets[next].second].status = critical_status::no_critical_state;
+    return;
+  }
   T mu = mu_first, h = T(0.01) * scale;
   vec z_prev = z;
   T mu_prev = mu_first;
   const T h_min = T(1e-9) * scale, h_max = T(0.08) * scale;
-  std::size_t next = 0;
   bool collapsed = false;
   for (int step = 0; step < 4000 && next < targets.size(); ++step) {
     const T goal = mu0 + dir * targets[next].first;
