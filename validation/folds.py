@@ -39,10 +39,11 @@ That the line, past the fold, comes back over its start is gecko's march alone; 
 establishes the fold it turned at.
 
 A first build's march gave the targets beyond such a fold status 2; at three of the first six
-checked the sign count of 3 found sign changes past the fold, and the march stopped there and left
-them status 6 (validation/README.md, "The separatrix march in arclength"), until the parabola test
-(validation/README.md, "Targets past a turned-back march"). The states of a results file are
-checked again with ``--redo`` (the bisection takes status 6 beyond the fold as it takes 2):
+checked, the sign count (3 above) found sign changes past the fold, and the march stopped there
+and left them status 6 (validation/README.md, "The separatrix march in arclength"), until the
+parabola test (validation/README.md, "Targets past a turned-back march"). The states of a results
+file are checked again with ``--redo`` (the bisection takes status 6 beyond the fold as it takes
+2):
 
     PYTHONPATH=python:. python3 -m validation.folds NEW.npz --since OLD.npz --sample 6 --seed 0 \\
         --json validation/results/folds_sample.json          (claims: status 2 in NEW, 1 or 6 in OLD)

@@ -11,7 +11,7 @@
 // has reached before. A march that comes back over the line's start after a fold has turned back,
 // as a followed line can (line_end::turned_back), and stops there: the targets it has not reached
 // then have no critical state on the line (status 2), as beyond a followed line that turned back.
-// The fold behind each such claim is checked in arbitrary precision by validation/folds.py (the
+// validation/folds.py checks the folds behind a sample of such claims in arbitrary precision (the
 // line's own states short of the fold confirmed by the bracketing shot, their square-root law, and
 // the partner root it predicts on the returning branch; validation/README.md, "Targets past a
 // turned-back march").
