@@ -171,16 +171,14 @@ inline void retry_in_long_double(const TwoLevelSeta<double>& s, const double* Ft
     // was given up on the way, not "Newton did not converge" (design 7775 of the 10,000-design
     // re-run, whose other Ft the retry solves, was such a state until the march in arclength
     // claimed the targets past a turned-back fold: it is status 2 now, below).
-    if ((r.status == critical_status::unsupported_state || r.status == critical_status::not_reached) &&
-        o.status == critical_status::not_converged) {
-      o.status = r.status;
-      o.iterations = r.iterations;
-      continue;
-    }
+    const bool retry_found_edge_or_line = (r.status == critical_status::unsupported_state ||
+                                           r.status == critical_status::not_reached) &&
+                                          o.status == critical_status::not_converged;
     // The retry's line turned back short of this Ft after a fold (its separatrix march in
     // arclength came back over Ft = 0, separatrix_arclength.hpp): no critical state on the line,
     // as where double's own line turns back.
-    if (r.status == critical_status::no_critical_state) {
+    const bool retry_turned_back = r.status == critical_status::no_critical_state;
+    if (retry_found_edge_or_line || retry_turned_back) {
       o.status = r.status;
       o.iterations = r.iterations;
       continue;

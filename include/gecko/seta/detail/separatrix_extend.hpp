@@ -17,6 +17,15 @@
 namespace gecko {
 namespace detail {
 
+// The targets from `next` on, beyond a separatrix march that came back over the line's start after
+// a fold (march_limit_in_arclength): no critical state on the line (status 2), as beyond a
+// followed line that turns back.
+template <class T>
+inline void beyond_turned_back(const std::vector<std::pair<T, std::size_t>>& targets, std::size_t next,
+                               critical_state<T>* out) {
+  for (; next < targets.size(); ++next) out[targets[next].second].status = critical_status::no_critical_state;
+}
+
 // States at the requested targets (indices `which` into Ft/out, status not_reached) beyond the end
 // of a line that stalled or whose corrector failed next to a separatrix: the limit system followed
 // in mu from the line's last node, each target's state accepted where separatrix_state_exact holds.
@@ -109,7 +118,7 @@ inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
     limit_march<T, Policy, E1, E2> m{lim, z, z, mu_first, mu_first, plan, joined};
     if (march_limit_in_arclength(sys, m, last.tangent, from, tdir, line.nodes.front().Ft, scale, mtol, tol, targets,
                                  next, Ft, expected, out, last.branch))
-      for (; next < targets.size(); ++next) out[targets[next].second].status = critical_status::no_critical_state;
+      beyond_turned_back(targets, next, out);
     return;
   }
   T mu = mu_first, h = T(0.01) * scale;
@@ -160,7 +169,7 @@ inline void extend_on_separatrix(const seta_system<T, Policy, E1, E2>& sys,
     // A march that turned back: the targets beyond its reach have no critical state on the line.
     if (march_limit_in_arclength(sys, m, last.tangent, mu0, dir, line.nodes.front().Ft, scale, mtol, tol, targets,
                                  next, Ft, expected, out))
-      for (; next < targets.size(); ++next) out[targets[next].second].status = critical_status::no_critical_state;
+      beyond_turned_back(targets, next, out);
   }
 }
 
