@@ -72,3 +72,22 @@ TEST_CASE("a re-plan at a converged state keeps the libration period count", "[s
                0.9644286252595868, 1.5464121652466718, 0.010191580584372783, -24.795400365954627},
               gecko::critical_status::inadmissible);
 }
+
+// Campaign design 3621 (validation/data/stress_10000_states.npz) at its negative Ft. Towards
+// negative Ft the beam is in compression and waves with a libration period of about 2 pi elastic
+// lengths (EI1/N)^(1/2); at Ft = -323 it is 20 elastic lengths long and passes a fourth period.
+// The refreshed plan's count was held below 4, so the plan dropped the periods there, the length
+// residual at the node was off by 4K (0.95 in the beam's length equation) and the line ended as
+// no_convergence, in double and in the long-double retry: the state was status 6 (not reached).
+// The count now has no such bound (gecko/seta/elastica_segment.hpp, max_libration_periods); the
+// state has 9 turning points on the beam, as many as the RK4 shot counts.
+TEST_CASE("a segment more than four librations long keeps its period count", "[seta][line][stress]") {
+  const period_case c{0.814886315391265, 0.09132366430478034, 4250640.435207513, 2287661.8090719273,
+                      0.027683694945233053, 1.3248813045970413, 0.2049004680303356, -576.3987285628448};
+  check_state(c, gecko::critical_status::converged);
+  gecko::TwoLevelSeta<double> s;
+  s.EI1 = c.EI1; s.EI2 = c.EI2; s.EA1 = c.EA1; s.EA2 = c.EA2;
+  s.l1 = 1.0; s.l2 = c.l2; s.alpha1 = c.alpha1; s.alpha2 = c.alpha2; s.w = 1.0;
+  const auto st = gecko::critical_line_at(s, std::vector<double>{c.Ft})[0];
+  CHECK(st.turning_points_beam == 9);  // past four periods (two turning points each)
+}

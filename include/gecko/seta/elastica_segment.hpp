@@ -399,6 +399,10 @@ inline bool make_libration_end(const segment_constants<T, E>& g, T psi_e, T X3e,
 // (make_libration_end with the same g and end), used on a libration.
 // target: where given (not NaN), the segment's length at the state, which is then a solved state
 // (a node of a followed line): see the period choice below.
+// The most libration periods a plan adds to a segment's phase difference (plan_segment): far more
+// than a segment of the stress box reaches (a beam 1,000 elastic lengths long has ~160).
+constexpr int max_libration_periods = 4096;
+
 template <class Policy, class T, bool E>
 inline segment_plan plan_segment(const segment_constants<T, E>& g, T psi_s, T X3s, T psi_e, T X3e,
                                  T direct_limit = T(0.75), T* length = nullptr,
@@ -450,10 +454,14 @@ inline segment_plan plan_segment(const segment_constants<T, E>& g, T psi_s, T X3
     // paper 001 eq (15) with l = 4K), the rule above drops a period as soon as te passes ts, and
     // the length jumps by 4K between two states of one line (the continuation then never
     // converges past them). At a solved state the length is known, and the period count is the
-    // one that gives it.
+    // one that gives it. Lines towards negative Ft put the segments in compression, where they
+    // wave with a libration period of about 2 pi elastic lengths (EI/N)^(1/2), their count
+    // growing as the square root of the force: a count held below 4 dropped the periods of a beam 20
+    // elastic lengths long, and the line ended as no_convergence there (campaign design 3621).
+    // max_libration_periods only keeps the count an int.
     if (target == target) {
       const T n = floor((target - (te - ts)) / (4 * K) + T(0.5));
-      if (n > plan.periods && n < 4) plan.periods = static_cast<int>(n);
+      if (n > plan.periods && n <= max_libration_periods) plan.periods = static_cast<int>(n);
     }
     L = te - ts + 4 * plan.periods * K;
     quarter = K;
@@ -461,9 +469,10 @@ inline segment_plan plan_segment(const segment_constants<T, E>& g, T psi_s, T X3
     const T p0 = ts - 4 * K * floor(ts / (4 * K));
     const T p1 = p0 + L;
     int count = 0;
-    for (int k = 0; k < 8; ++k) {
+    for (int k = 0; k <= 2 * max_libration_periods + 4; ++k) {
       const T tp = 2 * K * k;
-      if (tp > p0 && tp < p1) ++count;
+      if (!(tp < p1)) break;
+      if (tp > p0) ++count;
     }
     plan.turning_points = count;
   } else {
