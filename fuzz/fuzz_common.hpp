@@ -212,6 +212,16 @@ inline void check_close(const char* name, const std::string& args, double got, l
 inline void check_identity(const char* what, const std::string& args, long double a, long double b, double tol_eps,
                            long double scale, long double slack = 0) {
   if (std::isnan(a) || std::isnan(b)) fail(std::string(what) + args + ": NaN in an identity: " + hex(a) + " vs " + hex(b));
+  // Within the bound of the overflow threshold either side may round to +-inf, as check_close
+  // accepts for the value itself (R_D(1, 0x1.0000000000002p-1022, 0x0.4p-1022) is 0.17 eps
+  // below DBL_MAX, and both argument orders give +inf): the two agree when both lie within the
+  // bound of DBL_MAX with the same sign. inf - inf would otherwise read as a NaN difference.
+  if (std::isinf(a) || std::isinf(b)) {
+    const long double edge = static_cast<long double>(DBL_MAX) * (1 - tol_eps * eps);
+    if (std::fabs(a) >= edge && std::fabs(b) >= edge && std::signbit(a) == std::signbit(b) && scale >= edge) return;
+    fail(std::string(what) + args + ": " + hex(a) + " vs " + hex(b) + ": infinite, and not both within " +
+         hex(tol_eps) + " eps of the overflow threshold (scale " + hex(scale) + ")");
+  }
   const long double err = std::fabs(a - b);
   const long double bound = tol_eps * eps * scale + slack;
   if (!(err <= bound))
