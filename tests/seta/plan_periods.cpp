@@ -26,8 +26,9 @@ struct period_case {
 };
 
 // The state at c.Ft on the critical line, with the expected status (converged, or inadmissible:
-// it solves paper 001 eq (15) as well), checked against the RK4 shooting of the ODE.
-void check_state(const period_case& c, gecko::critical_status expected) {
+// it solves paper 001 eq (15) as well), checked against the RK4 shooting of the ODE; returned for
+// checks of its own.
+gecko::critical_state<double> check_state(const period_case& c, gecko::critical_status expected) {
   gecko::TwoLevelSeta<double> s;
   s.EI1 = c.EI1; s.EI2 = c.EI2; s.EA1 = c.EA1; s.EA2 = c.EA2;
   s.l1 = 1.0; s.l2 = c.l2; s.alpha1 = c.alpha1; s.alpha2 = c.alpha2; s.w = 1.0;
@@ -41,6 +42,7 @@ void check_state(const period_case& c, gecko::critical_status expected) {
   CHECK(std::fabs(static_cast<double>(shot.theta_joint) - st.theta_joint) <= 1e-8);
   CHECK(shot.sign_changes_beam == st.turning_points_beam);
   CHECK(shot.sign_changes_spatula == st.turning_points_spatula);
+  return st;
 }
 
 }  // namespace
@@ -84,10 +86,6 @@ TEST_CASE("a re-plan at a converged state keeps the libration period count", "[s
 TEST_CASE("a segment more than four librations long keeps its period count", "[seta][line][stress]") {
   const period_case c{0.814886315391265, 0.09132366430478034, 4250640.435207513, 2287661.8090719273,
                       0.027683694945233053, 1.3248813045970413, 0.2049004680303356, -576.3987285628448};
-  check_state(c, gecko::critical_status::converged);
-  gecko::TwoLevelSeta<double> s;
-  s.EI1 = c.EI1; s.EI2 = c.EI2; s.EA1 = c.EA1; s.EA2 = c.EA2;
-  s.l1 = 1.0; s.l2 = c.l2; s.alpha1 = c.alpha1; s.alpha2 = c.alpha2; s.w = 1.0;
-  const auto st = gecko::critical_line_at(s, std::vector<double>{c.Ft})[0];
+  const auto st = check_state(c, gecko::critical_status::converged);
   CHECK(st.turning_points_beam == 9);  // past four periods (two turning points each)
 }
