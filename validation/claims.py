@@ -48,6 +48,7 @@ Per state:
     python3 -m validation.claims --npz NEW.npz --since OLD.npz --json F.json   (every new claim)
     python3 -m validation.claims --npz NEW.npz --since OLD.npz --sample 12 --json F.json  (12 of them)
     python3 -m validation.claims --npz NEW.npz --since OLD.npz --column 1 --json F.json  (those at Ft = 0)
+    python3 -m validation.claims --npz NEW.npz --since OLD.npz --status 3 --json F.json  (the new status 3)
     python3 -m validation.claims --redo F.json --json G.json  (the states of an earlier results file again)
 """
 from __future__ import annotations
@@ -248,14 +249,16 @@ def sample_claims(z, n: int, seed: int):
     return picks
 
 
-def new_claims(z, old, column: int | None = None) -> list:
+def new_claims(z, old, column: int | None = None, status: int | None = None) -> list:
     """Every (design, column) whose status is 2 or 3 in ``z`` and was something else in ``old`` (a
     ``validation.recheck --save`` file of an earlier solver on the same states): the claims a
-    solver change made, all of them rather than a sample; only those in ``column`` where given."""
+    solver change made, all of them rather than a sample; only those in ``column`` and of
+    ``status`` where given."""
     st, so = z["status"], old["status"]
     if st.shape != so.shape or not np.array_equal(z["P"], old["P"]) or not np.array_equal(z["FT"], old["FT"]):
         raise SystemExit("--since: the two files hold different states (designs or Ft differ)")
-    picks = [tuple(map(int, ij)) for ij in np.argwhere(np.isin(st, (2, 3)) & (st != so))]
+    codes = (2, 3) if status is None else (status,)
+    picks = [tuple(map(int, ij)) for ij in np.argwhere(np.isin(st, codes) & (st != so))]
     return picks if column is None else [(i, j) for i, j in picks if j == column]
 
 
@@ -273,7 +276,7 @@ def redo_claims(z, path: str) -> tuple:
 
 
 def run(n: int | None, seed: int = 1, grid: int = 61, npz: str = STATES, progress: bool = False,
-        since: str = None, redo: str = None, column: int | None = None) -> dict:
+        since: str = None, redo: str = None, column: int | None = None, status: int | None = None) -> dict:
     z = np.load(npz)
     P, FT, ST = z["P"], z["FT"], z["status"]
     t0 = time.time()
@@ -282,7 +285,7 @@ def run(n: int | None, seed: int = 1, grid: int = 61, npz: str = STATES, progres
     if redo:
         picks, statuses = redo_claims(z, redo)
     elif since:
-        picks = new_claims(z, np.load(since), column)
+        picks = new_claims(z, np.load(since), column, status)
         if n is not None and n < len(picks):  # a seeded sample of them (a scan takes seconds to minutes)
             rng = np.random.default_rng(seed)
             picks = [picks[k] for k in sorted(rng.choice(len(picks), size=n, replace=False))]
@@ -313,6 +316,8 @@ def run(n: int | None, seed: int = 1, grid: int = 61, npz: str = STATES, progres
         out["npz"], out["since"] = os.path.relpath(npz), os.path.relpath(since)
         if column is not None:
             out["column"] = column
+        if status is not None:
+            out["status"] = status
     return {**out, "counts": counts, "states": states}
 
 
@@ -334,9 +339,14 @@ def main(argv=None):
     ap.add_argument("--column", type=int, default=None,
                     help="with --since: only the new claims in this column of the campaign's Ft "
                          "(1: Ft = 0, the natural state)")
+    ap.add_argument("--status", type=int, choices=(2, 3), default=None,
+                    help="with --since: only the new claims of this status (a scan of a status-2 "
+                         "claim past a fold at negative Ft can only say root_below_traced_range)")
     args = ap.parse_args(argv)
+    if args.status is not None and not args.since:
+        ap.error("--status applies with --since only")
     res = run(args.sample, args.seed, args.grid, args.npz, progress=True, since=args.since, redo=args.redo,
-              column=args.column)
+              column=args.column, status=args.status)
     print(json.dumps(res["counts"], indent=1))
     with open(args.json, "w") as f:
         json.dump(res, f, indent=1, allow_nan=True)

@@ -20,12 +20,19 @@ stopped, by the quantities that make the equations singular there (paper 001 eqs
   distance. Each segment's length in elastic lengths, l sqrt(N / EI), is reported beside it;
 * the joint rate theta2'(l1) and the base rate theta1'(0), each relative to sqrt(2 w / EI) of its
   segment: 0 is a turning point on the segment's end, where its phase plan changes;
-* 1 - u at the joint.
+* 1 - u at the joint;
+* the axial load relative to the axial rigidity, N / EA of each segment (N = hypot(Fn, Ft), 0 for
+  EA = inf): the size of the forms' extensibility term c N;
+* each segment's distance from the edge of the forms, 1 - b4: R(u) = f3(u) f4(u) with
+  f4 = 1 + b4 u, b4 = c N / (1 + sqrt(1 + 2 c M)) (gecko/seta/elastica_segment.hpp), and the forms
+  exist for b4 < 1 (f4's root -1/b4 outside [-1, 1]); b4 = 1 is R(-1) = 0 (1 for EA = inf).
 
 Mechanism per design (thresholds on the last node, in this order):
 
 * ``spatula_separatrix``, ``beam_separatrix``: that segment within 1e-3 of its separatrix (the
   distances are reported in decades: most are far closer);
+* ``beam_forms_edge``, ``spatula_forms_edge``: that segment within 1e-9 of the edge of the forms
+  (1 - b4); ``on_forms_edge_since_ft`` says from which Ft the line ran along it to its end;
 * ``joint_turning_point``: relative joint rate < 1e-2;
 * ``base_turning_point``: relative base rate < 1e-2;
 * ``other``: none of these;
@@ -36,7 +43,8 @@ Mechanism per design (thresholds on the last node, in this order):
     PYTHONPATH=python:. python3 -m validation.line_ends --lengths validation/rerun_10000.npz [--json F.json]
 
 ``--lengths`` takes no trace: it reports, by status, how many elastic lengths l sqrt(N / EI) the
-longer segment of each state has (``lengths`` below).
+longer segment of each state has (``lengths`` below), and, for a ``recheck --save`` file, how close
+the solved states come to the edge of the forms (``forms_edge_solved``).
 
 ``--control N`` traces N designs whose lines reach every requested Ft and reports how close they
 come to a separatrix anywhere along the line, for comparison with where the given-up lines stop
@@ -78,12 +86,31 @@ def node_quantities(line, d: dict) -> dict:
             "spatula_separatrix": (M2 - N - c2 * N * N / 2) / (np.abs(M2) + N),
             "beam_separatrix": (M1 - N - c1 * N * N / 2) / (np.abs(M1) + N),
             "spatula_elastic_lengths": d["l2"] * np.sqrt(N / d["EI2"]),
-            "beam_elastic_lengths": d["l1"] * np.sqrt(N / d["EI1"])}
+            "beam_elastic_lengths": d["l1"] * np.sqrt(N / d["EI1"]),
+            "spatula_axial_load_rel": c2 * N, "beam_axial_load_rel": c1 * N,
+            "spatula_forms_edge": 1.0 - c2 * N / (1.0 + np.sqrt(1.0 + 2.0 * c2 * M2)),
+            "beam_forms_edge": 1.0 - c1 * N / (1.0 + np.sqrt(1.0 + 2.0 * c1 * M1))}
 
 
 def last_node(line, d: dict) -> dict:
     """node_quantities at the last node, where the line stopped."""
     return {k: float(v[-1]) for k, v in node_quantities(line, d).items()}
+
+
+#: a segment closer than this to the edge of the forms (1 - b4) counts as on it
+FORMS_EDGE = 1e-9
+
+
+def on_forms_edge_since(line, d: dict):
+    """The Ft of the first node of the line's last stretch along the edge of the forms (either
+    segment's 1 - b4 below FORMS_EDGE at every node from there to the end), None if the last node
+    is not on it."""
+    q = node_quantities(line, d)
+    on = np.minimum(q["spatula_forms_edge"], q["beam_forms_edge"]) < FORMS_EDGE
+    if not len(on) or not on[-1]:
+        return None
+    off = np.flatnonzero(~on)
+    return float(q["Ft"][off[-1] + 1 if len(off) else 0])
 
 
 def band(x: float) -> str:
@@ -134,6 +161,38 @@ def lengths(npz: str) -> dict:
             "states": int(v.size), "max": round(float(v.max()), 1),
             "percentiles_50_90_99": [round(float(x), 1) for x in np.percentile(v, [50, 90, 99])],
             "percent_above": {str(t): round(100.0 * float(np.mean(v > t)), 1) for t in (10, 20, 30, 40, 60, 100)}}
+    if "Fn" in z.files and "beta" in z.files:
+        out["forms_edge_solved"] = forms_edge_solved(P, FT, z["Fn"], z["beta"], ST)
+    return out
+
+
+def forms_edge(P, FT, Fn, beta):
+    """Each state's distance from the edge of the forms, the smaller 1 - b4 of its two segments,
+    from Fn and beta alone: the joint rate from the spatula's first integral at the joint
+    (M2 = Ft + w, eq 12), the beam's M1 from the joint (eq 4), as node_quantities. P: one row of
+    campaign.FIELDS per design; FT, Fn, beta: one row of states per design."""
+    EI1, EI2, EA1, EA2, _, _, _, a2, w = (P[:, k:k + 1] for k in range(9))
+    with np.errstate(divide="ignore", invalid="ignore"):
+        N, phi = np.hypot(Fn, FT), np.arctan2(Fn, FT)
+        c1, c2 = np.where(np.isinf(EA1), 0.0, 1.0 / EA1), np.where(np.isinf(EA2), 0.0, 1.0 / EA2)
+        u, M2 = np.sin(beta - phi), FT + w
+        k2_sq = 2 * (M2 - N * u - c2 * N * N * u * u / 2) / EI2
+        v = np.sin(beta - a2 - phi)
+        M1 = EI1 / 2 * (EI2 / EI1) ** 2 * k2_sq + N * v + c1 * N * N * v * v / 2
+        return np.minimum(1 - c1 * N / (1 + np.sqrt(1 + 2 * c1 * M1)), 1 - c2 * N / (1 + np.sqrt(1 + 2 * c2 * M2)))
+
+
+def forms_edge_solved(P, FT, Fn, beta, status) -> dict:
+    """How close the solved states (status 0 or 7) come to the edge of the forms (forms_edge): counts
+    below 1e-12 ... 1e-3 by status, and the states within 1e-6."""
+    edge = forms_edge(P, FT, Fn, beta)
+    solved = np.isin(status, (0, 7)) & np.isfinite(edge)
+    out = {"solved": int(solved.sum()), "below": {}}
+    for t in (1e-12, 1e-9, 1e-6, 1e-3):
+        m = solved & (edge < t)
+        out["below"][f"{t:g}"] = {str(int(s)): int(c) for s, c in zip(*np.unique(status[m], return_counts=True))}
+    out["within_1e-6"] = [{"design": int(i), "column": int(j), "Ft": float(FT[i, j]), "status": int(status[i, j]),
+                           "one_minus_b4": float(edge[i, j])} for i, j in np.argwhere(solved & (edge < 1e-6))]
     return out
 
 
@@ -146,6 +205,10 @@ def mechanism(end: str, node: dict | None) -> str:
         return "spatula_separatrix"
     if abs(node["beam_separatrix"]) < 1e-3:
         return "beam_separatrix"
+    if node.get("beam_forms_edge", 1.0) < FORMS_EDGE:
+        return "beam_forms_edge"
+    if node.get("spatula_forms_edge", 1.0) < FORMS_EDGE:
+        return "spatula_forms_edge"
     if node["joint_rate_rel"] < 1e-2:
         return "joint_turning_point"
     if node["base_rate_rel"] < 1e-2:
@@ -174,7 +237,8 @@ def run(n: int, seed: int = 0, npz: str = STATES, progress: bool = False) -> dic
         end = line.end_code.name if line.end_code is not None else str(line.end)
         node = last_node(line, d) if len(line.Ft) else None
         rec = {"design": int(i), "ft_end": end_ft, "end": end, "nodes": int(len(line.Ft)),
-               "mechanism": mechanism(end, node), "last": node}
+               "mechanism": mechanism(end, node), "last": node,
+               "on_forms_edge_since_ft": on_forms_edge_since(line, d) if len(line.Ft) else None}
         designs.append(rec)
         if progress:
             print(f"design {i}: {end} after {rec['nodes']} nodes, {rec['mechanism']}", flush=True)
@@ -192,7 +256,23 @@ def run(n: int, seed: int = 0, npz: str = STATES, progress: bool = False) -> dic
             closeness[m][b] = closeness[m].get(b, 0) + 1
     return {"sample": len(designs), "of_designs": int(len(rows)), "seed": seed,
             "seconds": round(time.time() - t0, 1), "counts": counts, "separatrix_distance": closeness,
-            "designs": designs}
+            "by_mechanism": by_mechanism(designs, ST), "designs": designs}
+
+
+def by_mechanism(designs: list, status) -> dict:
+    """Per mechanism: the designs, their status-6 states, how many were traced towards negative Ft,
+    how many ended along the edge of the forms, and the beam's N / EA1 at the last node (min,
+    median, max)."""
+    out = {}
+    for m in sorted({r["mechanism"] for r in designs}):
+        rs = [r for r in designs if r["mechanism"] == m]
+        load = [r["last"]["beam_axial_load_rel"] for r in rs if r["last"] is not None]
+        out[m] = {"designs": len(rs), "status6_states": int(sum((status[r["design"]] == 6).sum() for r in rs)),
+                  "traced_to_negative_ft": sum(r["ft_end"] < 0 for r in rs),
+                  "on_forms_edge": sum(r.get("on_forms_edge_since_ft") is not None for r in rs),
+                  "beam_axial_load_rel_min_median_max":
+                      [float(f"{x:.3g}") for x in (np.min(load), np.median(load), np.max(load))] if load else []}
+    return out
 
 
 def main(argv=None):

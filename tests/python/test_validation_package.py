@@ -60,7 +60,8 @@ def test_claims_scan_finds_a_known_root_and_confirms_two_campaign_claims():
 
 
 def test_claims_since_column_and_a_natural_state_at_the_edge_of_the_forms():
-    # validation/claims.py --since/--column: the claims a change made, and those at one column only
+    # validation/claims.py --since/--column/--status: the claims a change made, and those at one
+    # column or of one status only
     from validation import claims, recheck
     P, FT = np.zeros((3, 9)), np.zeros((3, 6))
     old = dict(P=P, FT=FT, status=np.array([[1] * 6, [0] * 6, [6] * 6]))
@@ -71,6 +72,8 @@ def test_claims_since_column_and_a_natural_state_at_the_edge_of_the_forms():
     assert claims.new_claims(new, old) == [(0, j) for j in range(6)] + [(2, 0)]
     assert claims.new_claims(new, old, column=1) == [(0, 1)]
     assert claims.new_claims(new, old, column=0) == [(0, 0), (2, 0)]
+    assert claims.new_claims(new, old, status=2) == [(2, 0)]
+    assert claims.new_claims(new, old, column=0, status=3) == [(0, 0)]
     # Campaign design 88 (validation/README.md, "Where the give-ups end, and natural states at the
     # edge of the forms"): double's homotopy gives up, long double's finds the edge of the forms,
     # and the traced line has no natural state (status 3, line end unsupported_state). A root
@@ -147,6 +150,19 @@ def test_line_ends_first_integrals_match_the_solved_rates():
     assert line_ends.mechanism("stalled", {**node, "beam_separatrix": 1e-11}) == "beam_separatrix"
     assert line_ends.mechanism("reached_ft_end", {**node, "beam_separatrix": 1e-11}) == "now_reached"
     assert math.isfinite(node["spatula_elastic_lengths"])
+    np.testing.assert_allclose(q["beam_axial_load_rel"], N / d["EA1"], rtol=1e-15)
+    designs = [{"design": 0, "mechanism": "other", "ft_end": -1.0, "last": node},
+               {"design": 1, "mechanism": "other", "ft_end": 2.0, "last": {**node, "beam_axial_load_rel": 3.0}}]
+    summary = line_ends.by_mechanism(designs, np.array([[6, 6, 0], [0, 6, 2]]))["other"]
+    assert summary["designs"] == 2 and summary["status6_states"] == 3 and summary["traced_to_negative_ft"] == 1
+    assert summary["beam_axial_load_rel_min_median_max"][2] == 3.0 and summary["on_forms_edge"] == 0
+    # the edge of the forms, 1 - b4 (b4 = c N / (1 + sqrt(1 + 2 c M))): 1 for the inextensible beam,
+    # the spatula's from its first integral's M2 = Ft + w; the reference line stays off it
+    np.testing.assert_array_equal(q["beam_forms_edge"], 1.0)
+    np.testing.assert_allclose(q["spatula_forms_edge"], 1 - c2 * N / (1 + np.sqrt(1 + 2 * c2 * M2)), rtol=1e-15)
+    assert line_ends.on_forms_edge_since(line, d) is None
+    assert line_ends.mechanism("stalled", {**node, "beam_forms_edge": 1e-12}) == "beam_forms_edge"
+    assert line_ends.mechanism("stalled", {**node, "spatula_forms_edge": 1e-12}) == "spatula_forms_edge"
 
 
 def test_line_lengths_counts_elastic_lengths_by_status(tmp_path):
@@ -166,6 +182,26 @@ def test_line_lengths_counts_elastic_lengths_by_status(tmp_path):
     assert r["6"]["states"] == 2 and r["6"]["max"] == 50.0  # sqrt(|-2500|), the lower bound
     assert r["6"]["percent_above"]["30"] == 50.0 and r["6"]["percent_above"]["10"] == 100.0
     assert r["1"]["max"] == 30.0 and r["1"]["percent_above"]["30"] == 0.0
+
+
+def test_forms_edge_from_fn_and_beta_matches_the_solved_rates():
+    # line_ends.forms_edge takes the joint rate from the spatula's first integral (a states file
+    # has Fn and beta only); on solved states of a design with an extensible beam it must give the
+    # 1 - b4 that node_quantities gives from the solver's own joint rate, and count them by status
+    from validation import campaign, line_ends
+    s = gecko.TwoLevelSeta(EA1=60.0)
+    d = {f: float(getattr(s, f)) for f in campaign.FIELDS}
+    ft = np.linspace(-3.0, 9.0, 7)
+    line = s.critical_line(Ft=ft)
+    assert np.all(line.status == 0)
+    q = line_ends.node_quantities(line, d)
+    P = np.array([[d[f] for f in campaign.FIELDS]])
+    edge = line_ends.forms_edge(P, ft[None, :], line.Fn[None, :], line.theta_joint[None, :])[0]
+    np.testing.assert_allclose(edge, np.minimum(q["beam_forms_edge"], q["spatula_forms_edge"]), rtol=0, atol=1e-12)
+    assert np.all(edge < 1) and np.all(edge > 1e-3)
+    r = line_ends.forms_edge_solved(P, ft[None, :], line.Fn[None, :], line.theta_joint[None, :],
+                                    np.array([[0, 0, 7, 0, 6, 0, 0]]))
+    assert r["solved"] == 6 and r["below"]["0.001"] == {} and r["within_1e-6"] == []
 
 
 def test_status1_designs_sorts_the_designs_by_their_scales():
