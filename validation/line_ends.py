@@ -65,6 +65,18 @@ from .recheck import STATES
 GIVEN_UP = ("no_convergence", "stalled", "max_points")
 
 
+def beam_first_integral(EI1, EI2, c1, k2_sq, N, v):
+    """The beam's first-integral constant M1 from the joint (eq 4): moment continuity gives
+    theta1' = EI2 / EI1 theta2' there, at the beam's u = v = sin(theta_joint - alpha2 - phi)."""
+    return EI1 / 2 * (EI2 / EI1) ** 2 * k2_sq + N * v + c1 * N * N * v * v / 2
+
+
+def forms_edge_distance(c, N, M):
+    """1 - b4 of a segment, b4 = c N / (1 + sqrt(1 + 2 c M)) (f4 = 1 + b4 u,
+    gecko/seta/elastica_segment.hpp): the forms exist for b4 < 1."""
+    return 1.0 - c * N / (1.0 + np.sqrt(1.0 + 2.0 * c * M))
+
+
 def node_quantities(line, d: dict) -> dict:
     """The quantities of the module docstring at every node of a traced line (arrays)."""
     ft, fn, beta = (np.asarray(a, float) for a in (line.Ft, line.Fn, line.theta_joint))
@@ -77,8 +89,7 @@ def node_quantities(line, d: dict) -> dict:
     # R(1) = 0 is the separatrix (the saddle at u = 1 on the orbit)
     M2 = ft + d["w"]
     v = np.sin(beta - d["alpha2"] - phi)
-    k1_joint = d["EI2"] / d["EI1"] * k2  # moment continuity at the joint (eq 4)
-    M1 = d["EI1"] / 2 * k1_joint ** 2 + N * v + c1 * N * N * v * v / 2
+    M1 = beam_first_integral(d["EI1"], d["EI2"], c1, k2 * k2, N, v)
     return {"Ft": ft, "Fn": fn, "beta": beta,
             "joint_rate_rel": np.abs(k2) / math.sqrt(2 * d["w"] / d["EI2"]),
             "base_rate_rel": np.abs(np.asarray(line.theta_rate_base, float)) / math.sqrt(2 * d["w"] / d["EI1"]),
@@ -88,24 +99,23 @@ def node_quantities(line, d: dict) -> dict:
             "spatula_elastic_lengths": d["l2"] * np.sqrt(N / d["EI2"]),
             "beam_elastic_lengths": d["l1"] * np.sqrt(N / d["EI1"]),
             "spatula_axial_load_rel": c2 * N, "beam_axial_load_rel": c1 * N,
-            "spatula_forms_edge": 1.0 - c2 * N / (1.0 + np.sqrt(1.0 + 2.0 * c2 * M2)),
-            "beam_forms_edge": 1.0 - c1 * N / (1.0 + np.sqrt(1.0 + 2.0 * c1 * M1))}
+            "spatula_forms_edge": forms_edge_distance(c2, N, M2),
+            "beam_forms_edge": forms_edge_distance(c1, N, M1)}
 
 
-def last_node(line, d: dict) -> dict:
-    """node_quantities at the last node, where the line stopped."""
-    return {k: float(v[-1]) for k, v in node_quantities(line, d).items()}
+def last_node(q: dict) -> dict:
+    """node_quantities (q) at the last node, where the line stopped."""
+    return {k: float(v[-1]) for k, v in q.items()}
 
 
 #: a segment closer than this to the edge of the forms (1 - b4) counts as on it
 FORMS_EDGE = 1e-9
 
 
-def on_forms_edge_since(line, d: dict):
-    """The Ft of the first node of the line's last stretch along the edge of the forms (either
-    segment's 1 - b4 below FORMS_EDGE at every node from there to the end), None if the last node
-    is not on it."""
-    q = node_quantities(line, d)
+def on_forms_edge_since(q: dict):
+    """From a line's node_quantities (q): the Ft of the first node of its last stretch along the
+    edge of the forms (either segment's 1 - b4 below FORMS_EDGE at every node from there to the
+    end), None if the last node is not on it."""
     on = np.minimum(q["spatula_forms_edge"], q["beam_forms_edge"]) < FORMS_EDGE
     if not len(on) or not on[-1]:
         return None
@@ -178,8 +188,8 @@ def forms_edge(P, FT, Fn, beta):
         u, M2 = np.sin(beta - phi), FT + w
         k2_sq = 2 * (M2 - N * u - c2 * N * N * u * u / 2) / EI2
         v = np.sin(beta - a2 - phi)
-        M1 = EI1 / 2 * (EI2 / EI1) ** 2 * k2_sq + N * v + c1 * N * N * v * v / 2
-        return np.minimum(1 - c1 * N / (1 + np.sqrt(1 + 2 * c1 * M1)), 1 - c2 * N / (1 + np.sqrt(1 + 2 * c2 * M2)))
+        M1 = beam_first_integral(EI1, EI2, c1, k2_sq, N, v)
+        return np.minimum(forms_edge_distance(c1, N, M1), forms_edge_distance(c2, N, M2))
 
 
 def forms_edge_solved(P, FT, Fn, beta, status) -> dict:
@@ -205,9 +215,9 @@ def mechanism(end: str, node: dict | None) -> str:
         return "spatula_separatrix"
     if abs(node["beam_separatrix"]) < 1e-3:
         return "beam_separatrix"
-    if node.get("beam_forms_edge", 1.0) < FORMS_EDGE:
+    if node["beam_forms_edge"] < FORMS_EDGE:
         return "beam_forms_edge"
-    if node.get("spatula_forms_edge", 1.0) < FORMS_EDGE:
+    if node["spatula_forms_edge"] < FORMS_EDGE:
         return "spatula_forms_edge"
     if node["joint_rate_rel"] < 1e-2:
         return "joint_turning_point"
@@ -235,10 +245,11 @@ def run(n: int, seed: int = 0, npz: str = STATES, progress: bool = False) -> dic
         end_ft = float(np.min(ft)) if neg_only else float(np.max(ft))
         line = s.critical_line(ft_end=end_ft, resolve_nodes=False, errors="nan")
         end = line.end_code.name if line.end_code is not None else str(line.end)
-        node = last_node(line, d) if len(line.Ft) else None
+        q = node_quantities(line, d) if len(line.Ft) else None
+        node = last_node(q) if q else None
         rec = {"design": int(i), "ft_end": end_ft, "end": end, "nodes": int(len(line.Ft)),
                "mechanism": mechanism(end, node), "last": node,
-               "on_forms_edge_since_ft": on_forms_edge_since(line, d) if len(line.Ft) else None}
+               "on_forms_edge_since_ft": on_forms_edge_since(q) if q else None}
         designs.append(rec)
         if progress:
             print(f"design {i}: {end} after {rec['nodes']} nodes, {rec['mechanism']}", flush=True)
@@ -269,7 +280,7 @@ def by_mechanism(designs: list, status) -> dict:
         load = [r["last"]["beam_axial_load_rel"] for r in rs if r["last"] is not None]
         out[m] = {"designs": len(rs), "status6_states": int(sum((status[r["design"]] == 6).sum() for r in rs)),
                   "traced_to_negative_ft": sum(r["ft_end"] < 0 for r in rs),
-                  "on_forms_edge": sum(r.get("on_forms_edge_since_ft") is not None for r in rs),
+                  "on_forms_edge": sum(r["on_forms_edge_since_ft"] is not None for r in rs),
                   "beam_axial_load_rel_min_median_max":
                       [float(f"{x:.3g}") for x in (np.min(load), np.median(load), np.max(load))] if load else []}
     return out

@@ -151,8 +151,9 @@ def test_line_ends_first_integrals_match_the_solved_rates():
     assert line_ends.mechanism("reached_ft_end", {**node, "beam_separatrix": 1e-11}) == "now_reached"
     assert math.isfinite(node["spatula_elastic_lengths"])
     np.testing.assert_allclose(q["beam_axial_load_rel"], N / d["EA1"], rtol=1e-15)
-    designs = [{"design": 0, "mechanism": "other", "ft_end": -1.0, "last": node},
-               {"design": 1, "mechanism": "other", "ft_end": 2.0, "last": {**node, "beam_axial_load_rel": 3.0}}]
+    designs = [{"design": 0, "mechanism": "other", "ft_end": -1.0, "last": node, "on_forms_edge_since_ft": None},
+               {"design": 1, "mechanism": "other", "ft_end": 2.0, "last": {**node, "beam_axial_load_rel": 3.0},
+                "on_forms_edge_since_ft": None}]
     summary = line_ends.by_mechanism(designs, np.array([[6, 6, 0], [0, 6, 2]]))["other"]
     assert summary["designs"] == 2 and summary["status6_states"] == 3 and summary["traced_to_negative_ft"] == 1
     assert summary["beam_axial_load_rel_min_median_max"][2] == 3.0 and summary["on_forms_edge"] == 0
@@ -160,7 +161,7 @@ def test_line_ends_first_integrals_match_the_solved_rates():
     # the spatula's from its first integral's M2 = Ft + w; the reference line stays off it
     np.testing.assert_array_equal(q["beam_forms_edge"], 1.0)
     np.testing.assert_allclose(q["spatula_forms_edge"], 1 - c2 * N / (1 + np.sqrt(1 + 2 * c2 * M2)), rtol=1e-15)
-    assert line_ends.on_forms_edge_since(line, d) is None
+    assert line_ends.on_forms_edge_since(q) is None
     assert line_ends.mechanism("stalled", {**node, "beam_forms_edge": 1e-12}) == "beam_forms_edge"
     assert line_ends.mechanism("stalled", {**node, "spatula_forms_edge": 1e-12}) == "spatula_forms_edge"
 
