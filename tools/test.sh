@@ -10,9 +10,9 @@ bash tools/setup.sh
 
 jobs=$(nproc 2>/dev/null || echo 2)
 warn="-Wall -Wextra -Werror"
-# The test executables are compiled in batches of five files (CMake's unity build): every seta test
-# file instantiates the same solver, so one batch costs about what one file does alone, and the two
-# C++ builds take half the time. Test files therefore keep their file-local names distinct.
+# The test executables are compiled in batches of five files (CMake's unity build), the seta tests
+# in one (tests/CMakeLists.txt): every seta test file instantiates the same solver, so one batch
+# costs about what one file does alone. Test files therefore keep their file-local names distinct.
 unity="-DCMAKE_UNITY_BUILD=ON -DCMAKE_UNITY_BUILD_BATCH_SIZE=5"
 
 echo "== C++ tests (Release, $warn)"

@@ -526,3 +526,29 @@ def test_folds_parabola_law_and_verdict_on_a_made_fold_and_injected_failures():
     assert folds.parabola_verdict(made(partner=dict(Fn=B, q=+64.1, turns=[1, 0]))) == "undecided"
     assert folds.parabola_verdict(made(partner=dict(Fn=B + gap / 10, q=-64.1, turns=[1, 0]))) == "undecided"
     assert folds.parabola_verdict(dict(A=[1.0])) == "undecided"
+
+
+def test_verifier_scalar_route_steps_exactly_as_the_array_route(monkeypatch):
+    """verify.py steps up to SCALAR_STATES states one by one in Python floats and more as stacked
+    arrays: both must give the same shot, turning points included, and both a NaN for a shot that
+    blows up (the float route catches sin(inf))."""
+    from validation import verify
+
+    rng = np.random.default_rng(3)
+    m = 12
+    theta, p = rng.uniform(-2, 2, m), rng.uniform(-3, 3, m)
+    h = np.full(m, -0.05)
+    Fn, Ft = rng.uniform(-20, 20, m), rng.uniform(-20, 20, m)
+    inv_ei, inv_ea = rng.uniform(0.5, 2, m), np.where(rng.random(m) < 0.5, 0.0, rng.uniform(0, 0.1, m))
+    Ft[-1], h[-1] = 1e300, -1e3   # blows up within the steps
+    runs = {}
+    for limit in (0, m):
+        monkeypatch.setattr(verify, "SCALAR_STATES", limit)
+        with np.errstate(all="ignore"):
+            runs[limit] = verify._rk8_uniform(theta, p, h, 400, Fn, Ft, inv_ei, inv_ea, count_turns=True)
+    (ta, pa, ua), (ts, ps, us) = runs[0], runs[m]
+    assert np.isnan(ta[-1]) and np.isnan(ts[-1])
+    np.testing.assert_allclose(ts[:-1], ta[:-1], rtol=0, atol=1e-14 * np.abs(ta[:-1]).max())
+    np.testing.assert_allclose(ps[:-1], pa[:-1], rtol=0, atol=1e-14 * np.abs(pa[:-1]).max())
+    np.testing.assert_array_equal(us[:-1], ua[:-1])
+    assert ua[:-1].sum() > m   # the states turn: the counts are compared, not only zeros
