@@ -173,7 +173,38 @@ def lengths(npz: str) -> dict:
             "percent_above": {str(t): round(100.0 * float(np.mean(v > t)), 1) for t in (10, 20, 30, 40, 60, 100)}}
     if "Fn" in z.files and "beta" in z.files:
         out["forms_edge_solved"] = forms_edge_solved(P, FT, z["Fn"], z["beta"], ST)
+        out["end_stretch_solved"] = end_stretch_solved(P, FT, z["Fn"], z["beta"], ST)
     return out
+
+
+def end_stretch(P, FT, Fn, beta):
+    """Each state's lowest stretch 1 + T/EA at the ends of its segments, T = Ft sin(theta) -
+    Fn cos(theta) (the axial force of eqs 1-2): the base (theta1 = alpha1), the joint on either
+    side (theta2 = beta, theta1 = beta - alpha2) and the contact edge (theta2 = pi/2). A value <= 0
+    is a segment compressed by EA or more at that end, which the linear law maps to a length <= 0.
+    Same arguments as forms_edge."""
+    _, _, EA1, EA2, _, _, a1, a2, _ = (P[:, k:k + 1] for k in range(9))
+    c1, c2 = np.where(np.isinf(EA1), 0.0, 1.0 / EA1), np.where(np.isinf(EA2), 0.0, 1.0 / EA2)
+    T = lambda theta: FT * np.sin(theta) - Fn * np.cos(theta)  # noqa: E731
+    return np.minimum.reduce([1 + c1 * T(a1 + 0 * beta), 1 + c1 * T(beta - a2), 1 + c2 * T(beta),
+                              1 + c2 * T(np.pi / 2 + 0 * beta)])
+
+
+def end_stretch_solved(P, FT, Fn, beta, status) -> dict:
+    """The solved states (status 0 or 7) whose stretch is <= 0 at a segment end (end_stretch), by
+    status, and those with c N > 1 on a segment, where the stretch can reach 0 inside it (the
+    admissibility check allows either: gecko/seta/admissibility.hpp)."""
+    EA1, EA2 = P[:, 2:3], P[:, 3:4]
+    with np.errstate(divide="ignore"):
+        cN = np.maximum(np.where(np.isinf(EA1), 0.0, 1.0 / EA1), np.where(np.isinf(EA2), 0.0, 1.0 / EA2)) \
+            * np.hypot(Fn, FT)
+    low = end_stretch(P, FT, Fn, beta)
+    solved = np.isin(status, (0, 7)) & np.isfinite(low)
+
+    def by_status(m):
+        return {str(int(s)): int(c) for s, c in zip(*np.unique(status[m], return_counts=True))}
+    return {"solved": by_status(solved), "at_most_zero_at_an_end": by_status(solved & (low <= 0)),
+            "c_N_above_1": by_status(solved & (cN > 1))}
 
 
 def forms_edge(P, FT, Fn, beta):

@@ -552,3 +552,20 @@ def test_verifier_scalar_route_steps_exactly_as_the_array_route(monkeypatch):
     np.testing.assert_allclose(ps[:-1], pa[:-1], rtol=0, atol=1e-14 * np.abs(pa[:-1]).max())
     np.testing.assert_array_equal(us[:-1], ua[:-1])
     assert ua[:-1].sum() > m   # the states turn: the counts are compared, not only zeros
+
+
+def test_end_stretch_finds_a_segment_compressed_past_zero_length():
+    # line_ends.end_stretch: 1 + T/EA at the four segment ends, T = Ft sin(theta) - Fn cos(theta).
+    # An inextensible spatula (stretch 1) on a beam with EA1 = 2 under Fn = 4, Ft = 0: T = -4 cos
+    # theta1, so the base (theta1 = alpha1 = 0) has stretch 1 - 2 = -1; with alpha1 = pi/2 the base
+    # is unloaded and the joint (theta1 = beta - alpha2 = 0.3) has 1 - 2 cos(0.3).
+    from validation import line_ends
+    P = np.array([[1.0, 1.0, 2.0, np.inf, 1.0, 1.0, 0.0, 0.2, 1.0],
+                  [1.0, 1.0, 2.0, np.inf, 1.0, 1.0, np.pi / 2, 0.2, 1.0]])
+    FT, Fn, beta = np.zeros((2, 2)), np.array([[4.0, 0.5], [4.0, 0.5]]), np.full((2, 2), 0.5)
+    low = line_ends.end_stretch(P, FT, Fn, beta)
+    np.testing.assert_allclose(low[0], [-1.0, 0.75], rtol=0, atol=1e-15)
+    np.testing.assert_allclose(low[1], [1 - 2 * np.cos(0.3), 1 - 0.25 * np.cos(0.3)], rtol=0, atol=1e-15)
+    r = line_ends.end_stretch_solved(P, FT, Fn, beta, np.array([[0, 0], [7, 6]]))
+    assert r == {"solved": {"0": 2, "7": 1}, "at_most_zero_at_an_end": {"0": 1, "7": 1},
+                 "c_N_above_1": {"0": 1, "7": 1}}
