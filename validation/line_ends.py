@@ -25,7 +25,9 @@ stopped, by the quantities that make the equations singular there (paper 001 eqs
   EA = inf): the size of the forms' extensibility term c N;
 * each segment's distance from the edge of the forms, 1 - b4: R(u) = f3(u) f4(u) with
   f4 = 1 + b4 u, b4 = c N / (1 + sqrt(1 + 2 c M)) (gecko/seta/elastica_segment.hpp), and the forms
-  exist for b4 < 1 (f4's root -1/b4 outside [-1, 1]); b4 = 1 is R(-1) = 0 (1 for EA = inf).
+  exist for b4 < 1 (f4's root -1/b4 outside [-1, 1]); b4 = 1 is R(-1) = 0 (1 for EA = inf);
+* the beam's stretch 1 + T/EA1 at its joint end (T = N u, the axial force of eqs 1-2): <= 0 is a
+  beam compressed by EA1 or more there, which the linear law maps to a length <= 0.
 
 Mechanism per design (thresholds on the last node, in this order):
 
@@ -44,7 +46,8 @@ Mechanism per design (thresholds on the last node, in this order):
 
 ``--lengths`` takes no trace: it reports, by status, how many elastic lengths l sqrt(N / EI) the
 longer segment of each state has (``lengths`` below), and, for a ``recheck --save`` file, how close
-the solved states come to the edge of the forms (``forms_edge_solved``).
+the solved states come to the edge of the forms (``forms_edge_solved``) and which have a stretch
+<= 0 at a segment end (``end_stretch_solved``).
 
 ``--control N`` traces N designs whose lines reach every requested Ft and reports how close they
 come to a separatrix anywhere along the line, for comparison with where the given-up lines stop
@@ -100,7 +103,9 @@ def node_quantities(line, d: dict) -> dict:
             "beam_elastic_lengths": d["l1"] * np.sqrt(N / d["EI1"]),
             "spatula_axial_load_rel": c2 * N, "beam_axial_load_rel": c1 * N,
             "spatula_forms_edge": forms_edge_distance(c2, N, M2),
-            "beam_forms_edge": forms_edge_distance(c1, N, M1)}
+            "beam_forms_edge": forms_edge_distance(c1, N, M1),
+            # the beam's stretch 1 + T/EA1 at its joint end (theta1 = beta - alpha2), T = N u there
+            "beam_joint_stretch": 1.0 + c1 * N * v}
 
 
 def last_node(q: dict) -> dict:
@@ -303,8 +308,8 @@ def run(n: int, seed: int = 0, npz: str = STATES, progress: bool = False) -> dic
 
 def by_mechanism(designs: list, status) -> dict:
     """Per mechanism: the designs, their status-6 states, how many were traced towards negative Ft,
-    how many ended along the edge of the forms, and the beam's N / EA1 at the last node (min,
-    median, max)."""
+    how many ended along the edge of the forms, and the beam's N / EA1 and stretch at its joint end
+    at the last node (min, median, max)."""
     out = {}
     for m in sorted({r["mechanism"] for r in designs}):
         rs = [r for r in designs if r["mechanism"] == m]
@@ -313,8 +318,14 @@ def by_mechanism(designs: list, status) -> dict:
                   "traced_to_negative_ft": sum(r["ft_end"] < 0 for r in rs),
                   "on_forms_edge": sum(r["on_forms_edge_since_ft"] is not None for r in rs),
                   "beam_axial_load_rel_min_median_max":
-                      [float(f"{x:.3g}") for x in (np.min(load), np.median(load), np.max(load))] if load else []}
+                      [float(f"{x:.3g}") for x in (np.min(load), np.median(load), np.max(load))] if load else [],
+                  "beam_joint_stretch_min_median_max": spread([r["last"]["beam_joint_stretch"] for r in rs
+                                                               if r["last"] is not None])}
     return out
+
+
+def spread(x: list) -> list:
+    return [float(f"{v:.3g}") for v in (np.min(x), np.median(x), np.max(x))] if x else []
 
 
 def main(argv=None):

@@ -200,6 +200,12 @@ def test_forms_edge_from_fn_and_beta_matches_the_solved_rates():
     edge = line_ends.forms_edge(P, ft[None, :], line.Fn[None, :], line.theta_joint[None, :])[0]
     np.testing.assert_allclose(edge, np.minimum(q["beam_forms_edge"], q["spatula_forms_edge"]), rtol=0, atol=1e-12)
     assert np.all(edge < 1) and np.all(edge > 1e-3)
+    # the beam's stretch at its joint end, 1 + T/EA1 with T = Ft sin(theta1) - Fn cos(theta1)
+    th1 = line.theta_joint - d["alpha2"]
+    joint = 1 + (line.Ft * np.sin(th1) - line.Fn * np.cos(th1)) / d["EA1"]
+    np.testing.assert_allclose(q["beam_joint_stretch"], joint, rtol=0, atol=1e-13)
+    assert np.all(line_ends.end_stretch(P, ft[None, :], line.Fn[None, :], line.theta_joint[None, :])[0] <= joint)
+    assert np.ptp(joint) > 1e-3   # the load changes it along the line
     r = line_ends.forms_edge_solved(P, ft[None, :], line.Fn[None, :], line.theta_joint[None, :],
                                     np.array([[0, 0, 7, 0, 6, 0, 0]]))
     assert r["solved"] == 6 and r["below"]["0.001"] == {} and r["within_1e-6"] == []
