@@ -7,6 +7,8 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/setup.sh
+# Each stage's header says how long the run has taken so far (CI's budget is 45 minutes).
+stage() { echo "== $* [$(date -u +%T), ${SECONDS} s in]"; }
 
 jobs=$(nproc 2>/dev/null || echo 2)
 warn="-Wall -Wextra -Werror"
@@ -15,12 +17,12 @@ warn="-Wall -Wextra -Werror"
 # costs about what one file does alone. Test files therefore keep their file-local names distinct.
 unity="-DCMAKE_UNITY_BUILD=ON -DCMAKE_UNITY_BUILD_BATCH_SIZE=5"
 
-echo "== C++ tests (Release, $warn)"
+stage "C++ tests (Release, $warn)"
 cmake -S . -B build/ci-release -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS="$warn" $unity >/dev/null
 cmake --build build/ci-release -j "$jobs"
 ctest --test-dir build/ci-release --output-on-failure -j "$jobs"
 
-echo "== C++ tests under ASan + UBSan"
+stage "C++ tests under ASan + UBSan"
 san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
 # -O1 -g1: sanitizer builds compile twice as fast as -O2 -g and still report file:line.
 cmake -S . -B build/ci-asan -G Ninja -DCMAKE_BUILD_TYPE= -DGECKO_INSTALL=OFF $unity \
@@ -29,14 +31,15 @@ cmake --build build/ci-asan -j "$jobs"
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir build/ci-asan --output-on-failure -j "$jobs"
 
-echo "== Fuzzing (bounded, fixed seed): elliptic kernels (libFuzzer) and the scene parser (atheris)"
+stage "Fuzzing (bounded, fixed seed): elliptic kernels (libFuzzer) and the scene parser (atheris)"
 bash tools/fuzz.sh
 
 # Twice: with OPENBLAS_CORETYPE unset, and with the Haswell kernels that OpenBLAS selects (or is
 # told to select) on some machines of CI's kind; BLAS rounding must not change a verdict.
-echo "== Python tests (OPENBLAS_CORETYPE unset)"
+stage "Python tests (OPENBLAS_CORETYPE unset)"
 env -u OPENBLAS_CORETYPE .venv/bin/python -m pytest -q tests/python
-echo "== Python tests (OPENBLAS_CORETYPE=Haswell)"
+stage "Python tests (OPENBLAS_CORETYPE=Haswell)"
 OPENBLAS_CORETYPE=Haswell .venv/bin/python -m pytest -q tests/python
-echo "== Documentation (tools/docs.sh: warnings are errors, tutorials executed)"
+stage "Documentation (tools/docs.sh: warnings are errors, tutorials executed)"
 bash tools/docs.sh
+stage "done"
