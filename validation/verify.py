@@ -10,10 +10,13 @@ across the joint (theta1 = theta2 - alpha2, EI1 theta1' = EI2 theta2') down to t
 For the true critical Fn the base mismatch R(Fn) = theta1(0) - alpha1 vanishes and theta2(l1) = beta.
 
 Integrator: fixed-step explicit Runge-Kutta of order 8 (the Dormand-Prince 8(5,3) tableau, used
-with a fixed step and no error control), vectorised over states with numpy.  Each state is
-integrated with N and 2N steps; the difference (x 256/255) bounds the integration error of the 2N
-result (order 8: the error of the 2N run is ~1/256 of the difference), and N is doubled per state
-until that estimate is below 1e-13 rad (or N reaches 2^16: "unverifiable", reported as such).
+with a fixed step and no error control), vectorised over states with numpy (up to SCALAR_STATES
+states are stepped one by one in Python floats, where numpy's per-call overhead would dominate).
+Each state is integrated with N and 2N steps; the difference (x 256/255) bounds the integration
+error of the 2N result (order 8: the error of the 2N run is ~1/256 of the difference), and N is
+quadrupled per state until that estimate is below 1e-13 rad, it stops shrinking (rounding), or 2N
+reaches N_MAX = 2^12 (the last run has at most 2^13 steps); the estimate is reported either way,
+and a state whose estimate stays large is inconclusive, not verified.
 
 The mismatch is turned into an Fn error by one extra shot: S = dR/dFn by a forward difference,
 dFn = -R/S.  Where |dFn| is not tiny (or S is small: a fold of the line), the verifier refines by
