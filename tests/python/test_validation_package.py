@@ -575,3 +575,11 @@ def test_end_stretch_finds_a_segment_compressed_past_zero_length():
     r = line_ends.end_stretch_solved(P, FT, Fn, beta, np.array([[0, 0], [7, 6]]))
     assert r == {"solved": {"0": 2, "7": 1}, "at_most_zero_at_an_end": {"0": 1, "7": 1},
                  "c_N_above_1": {"0": 1, "7": 1}}
+
+
+def test_verify_timing_compares_outputs_to_the_bit():
+    from validation import verify_timing
+    a = {"dFn": np.array([1.0, np.nan]), "steps": np.array([16, 32])}
+    assert verify_timing.differing_keys(a, {k: v.copy() for k, v in a.items()}) == []
+    assert verify_timing.differing_keys(a, {"dFn": np.array([1.0, np.nan]), "steps": np.array([16, 33])}) == ["steps"]
+    assert verify_timing.differing_keys(a, {"dFn": np.array([np.nextafter(1.0, 2.0), np.nan])}) == ["dFn", "steps"]
