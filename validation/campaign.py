@@ -137,9 +137,17 @@ def design_dict(P):
     return {f: P[:, k].copy() for k, f in enumerate(FIELDS)}
 
 
-def verify_states(P, FT, Fn, beta, status, chunk=4000):
+def short_campaign_designs():
+    """The designs and Ft of the short campaign (tests/python/test_stress_short.py): 40 designs,
+    six Ft each, seed 6."""
+    rng = np.random.default_rng(6)
+    P = sample_designs(40, rng)
+    return P, sample_ft(P, rng)
+
+
+def verify_states(P, FT, Fn, beta, status, chunk=4000, verifier=None):
     """Verify every solved state (status 0, and 7, which keeps its values); returns per-state arrays
-    (NaN where not verified)."""
+    (NaN where not verified). verifier: a module with verify.py's ``verify`` (default verify.py)."""
     n, m = FT.shape
     rows, cols = np.nonzero(solved(status))
     out = {k: np.full((n, m), np.nan) for k in ("dFn", "dbeta", "fn_uncert", "beta_uncert", "theta_err", "R", "S")}
@@ -152,7 +160,7 @@ def verify_states(P, FT, Fn, beta, status, chunk=4000):
     for c0 in range(0, rows.size, chunk):
         r, c = rows[c0:c0 + chunk], cols[c0:c0 + chunk]
         d = design_dict(P[r])
-        v = verify.verify(d, FT[r, c], Fn[r, c], beta[r, c])
+        v = (verifier or verify).verify(d, FT[r, c], Fn[r, c], beta[r, c])
         for k in out:
             out[k][r, c] = v[k]
     return out

@@ -182,14 +182,21 @@ def lengths(npz: str) -> dict:
     return out
 
 
+def compliances(P):
+    """c = 1 / EA of each design's beam and spatula (0 for EA = inf), as columns."""
+    EA1, EA2 = P[:, 2:3], P[:, 3:4]
+    with np.errstate(divide="ignore"):
+        return np.where(np.isinf(EA1), 0.0, 1.0 / EA1), np.where(np.isinf(EA2), 0.0, 1.0 / EA2)
+
+
 def end_stretch(P, FT, Fn, beta):
     """Each state's lowest stretch 1 + T/EA at the ends of its segments, T = Ft sin(theta) -
     Fn cos(theta) (the axial force of eqs 1-2): the base (theta1 = alpha1), the joint on either
     side (theta2 = beta, theta1 = beta - alpha2) and the contact edge (theta2 = pi/2). A value <= 0
     is a segment compressed by EA or more at that end, which the linear law maps to a length <= 0.
     Same arguments as forms_edge."""
-    _, _, EA1, EA2, _, _, a1, a2, _ = (P[:, k:k + 1] for k in range(9))
-    c1, c2 = np.where(np.isinf(EA1), 0.0, 1.0 / EA1), np.where(np.isinf(EA2), 0.0, 1.0 / EA2)
+    a1, a2 = P[:, 6:7], P[:, 7:8]
+    c1, c2 = compliances(P)
     T = lambda theta: FT * np.sin(theta) - Fn * np.cos(theta)  # noqa: E731
     return np.minimum.reduce([1 + c1 * T(a1 + 0 * beta), 1 + c1 * T(beta - a2), 1 + c2 * T(beta),
                               1 + c2 * T(np.pi / 2 + 0 * beta)])
@@ -199,10 +206,7 @@ def end_stretch_solved(P, FT, Fn, beta, status) -> dict:
     """The solved states (status 0 or 7) whose stretch is <= 0 at a segment end (end_stretch), by
     status, and those with c N > 1 on a segment, where the stretch can reach 0 inside it (the
     admissibility check allows either: gecko/seta/admissibility.hpp)."""
-    EA1, EA2 = P[:, 2:3], P[:, 3:4]
-    with np.errstate(divide="ignore"):
-        cN = np.maximum(np.where(np.isinf(EA1), 0.0, 1.0 / EA1), np.where(np.isinf(EA2), 0.0, 1.0 / EA2)) \
-            * np.hypot(Fn, FT)
+    cN = np.maximum(*compliances(P)) * np.hypot(Fn, FT)
     low = end_stretch(P, FT, Fn, beta)
     solved = np.isin(status, (0, 7)) & np.isfinite(low)
 
@@ -217,10 +221,10 @@ def forms_edge(P, FT, Fn, beta):
     from Fn and beta alone: the joint rate from the spatula's first integral at the joint
     (M2 = Ft + w, eq 12), the beam's M1 from the joint (eq 4), as node_quantities. P: one row of
     campaign.FIELDS per design; FT, Fn, beta: one row of states per design."""
-    EI1, EI2, EA1, EA2, _, _, _, a2, w = (P[:, k:k + 1] for k in range(9))
+    EI1, EI2, _, _, _, _, _, a2, w = (P[:, k:k + 1] for k in range(9))
     with np.errstate(divide="ignore", invalid="ignore"):
         N, phi = np.hypot(Fn, FT), np.arctan2(Fn, FT)
-        c1, c2 = np.where(np.isinf(EA1), 0.0, 1.0 / EA1), np.where(np.isinf(EA2), 0.0, 1.0 / EA2)
+        c1, c2 = compliances(P)
         u, M2 = np.sin(beta - phi), FT + w
         k2_sq = 2 * (M2 - N * u - c2 * N * N * u * u / 2) / EI2
         v = np.sin(beta - a2 - phi)

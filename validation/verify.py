@@ -80,9 +80,15 @@ def _dop853_step(theta, p, h, Fn, Ft, inv_ei, inv_ea, heights=False):
     return theta + h * dt, p + h * dp, (h * dz if heights else None), kz[0]
 
 
-# The nonzero coefficients of the tableau as Python floats, per stage, for the scalar route below.
-_A_ROWS = [[(j, float(_A[i, j])) for j in range(i) if _A[i, j] != 0.0] for i in range(_NS)]
-_B_ROW = [(j, float(_B[j])) for j in range(_NS) if _B[j] != 0.0]
+# The tableau's nonzero coefficients per stage: as arrays for the stacked numpy step (summing
+# a[j] * k[j] over axis 0 adds the terms in the order of j, as a scalar loop would) and as Python
+# floats for the scalar route.
+_A_NZ = [np.nonzero(_A[i, :i])[0] for i in range(_NS)]
+_A_COL = [_A[i, idx][:, None, None] for i, idx in enumerate(_A_NZ)]
+_B_NZ = np.nonzero(_B)[0]
+_B_COL = _B[_B_NZ][:, None, None]
+_A_ROWS = [[(int(j), float(_A[i, j])) for j in idx] for i, idx in enumerate(_A_NZ)]
+_B_ROW = [(int(j), float(_B[j])) for j in _B_NZ]
 # Up to this many states a step costs more in numpy's per-call overhead (about 240 array operations
 # per DOP853 step, 0.43 ms for 4 to 16 states, 0.47 ms for 32) than in plain float arithmetic
 # (18 us per state), and the states are stepped one by one. The arithmetic is the same, operation
@@ -94,10 +100,10 @@ def _rk8_scalar(theta, p, h, n, Fn, Ft, inv_ei, inv_ea, count_turns):
     """_rk8_uniform for one state, in Python floats: n steps of size h; returns (theta, p, turns)."""
     turns = 0
     sin, cos = math.sin, math.cos
+    kt = [0.0] * _NS   # every stage is written before it is read, each step
+    kp = [0.0] * _NS
     try:
         for _ in range(n):
-            kt = [0.0] * _NS
-            kp = [0.0] * _NS
             s, c = sin(theta), cos(theta)
             kt[0], kp[0] = p, -(Fn * s + Ft * c) * (1.0 + (Ft * s - Fn * c) * inv_ea) * inv_ei
             for i in range(1, _NS):
@@ -119,14 +125,6 @@ def _rk8_scalar(theta, p, h, n, Fn, Ft, inv_ei, inv_ea, count_turns):
     except (ValueError, OverflowError):   # sin(inf): the shot blew up; numpy's route gives NaN too
         return math.nan, math.nan, turns
     return theta, p, turns
-
-
-# The tableau's nonzero coefficients per stage, for the stacked numpy step below: summing
-# a[j] * k[j] over axis 0 adds the terms in the order of j, as a scalar loop would.
-_A_NZ = [np.nonzero(_A[i, :i])[0] for i in range(_NS)]
-_A_COL = [_A[i, idx][:, None, None] for i, idx in enumerate(_A_NZ)]
-_B_NZ = np.nonzero(_B)[0]
-_B_COL = _B[_B_NZ][:, None, None]
 
 
 def _dop853_stacked(Y, h, Fn, Ft, inv_ei, inv_ea, K):

@@ -40,9 +40,7 @@ def test_verifier_is_accurate_on_mpmath_references():
 
 
 def test_short_campaign_no_silently_wrong_point():
-    rng = np.random.default_rng(6)
-    P = campaign.sample_designs(40, rng)
-    FT = campaign.sample_ft(P, rng)
+    P, FT = campaign.short_campaign_designs()
     Fn, beta, status, tpb, tps, secs = campaign.run_gecko(P, FT, timeout=5.0, progress=False)
     v = campaign.verify_states(P, FT, Fn, beta, status)
     cl = campaign.classify(P, FT, Fn, beta, status, v, turns=(tpb, tps))
