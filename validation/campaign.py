@@ -213,13 +213,25 @@ def run_chunk(P, FT, timeout):
                 t_gecko=np.float64(t_gecko), t_ver=np.float64(t_ver), **{"v_" + k: x for k, x in v.items()})
 
 
-def print_json(out, path=None):
-    """Print a result dict, and write it to path (JSON) when given (the study scripts' output)."""
-    print(json.dumps(out, indent=1))
+def print_json(out, path=None, omit=()):
+    """Print a result dict (without the keys in omit), and write all of it to path (JSON) when
+    given (the study scripts' output)."""
+    print(json.dumps({k: v for k, v in out.items() if k not in omit}, indent=1))
     if path:
         with open(path, "w") as f:
             json.dump(out, f, indent=1)
     return out
+
+
+def compare_main(run, doc, argv=None, omit=()):
+    """The command line of a study that compares two ``recheck --save`` files of one campaign:
+    ``old new [--json F]``, run(old, new) printed (without omit) and saved by print_json."""
+    ap = argparse.ArgumentParser(description=doc, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("old", help="recheck --save file before the change")
+    ap.add_argument("new", help="recheck --save file after it")
+    ap.add_argument("--json", default=None)
+    args = ap.parse_args(argv)
+    return print_json(run(args.old, args.new), args.json, omit)
 
 
 def chunk_path(outdir, k):

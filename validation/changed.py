@@ -30,7 +30,6 @@ largest was, and ``moved_states`` lists the moved ones with their change in both
 """
 from __future__ import annotations
 
-import argparse
 import time
 
 import numpy as np
@@ -126,12 +125,7 @@ def run(old_path: str, new_path: str) -> dict:
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("old")
-    ap.add_argument("new")
-    ap.add_argument("--json", default=None)
-    args = ap.parse_args(argv)
-    return campaign.print_json(run(args.old, args.new), args.json)
+    return campaign.compare_main(run, __doc__, argv)
 
 
 if __name__ == "__main__":

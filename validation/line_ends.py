@@ -204,8 +204,9 @@ def end_stretch(P, FT, Fn, beta):
 
 def end_stretch_solved(P, FT, Fn, beta, status) -> dict:
     """The solved states (status 0 or 7) whose stretch is <= 0 at a segment end (end_stretch), by
-    status, and those with c N > 1 on a segment, where the stretch can reach 0 inside it (the
-    admissibility check allows either: gecko/seta/admissibility.hpp)."""
+    status, and those with c N > 1 on a segment, where the stretch can reach 0 inside it (a
+    stretch <= 0 anywhere makes a state inadmissible, gecko/seta/admissibility.hpp; it did not
+    before the rule of validation/README.md, "States compressed to zero length")."""
     cN = np.maximum(*compliances(P)) * np.hypot(Fn, FT)
     low = end_stretch(P, FT, Fn, beta)
     solved = np.isin(status, (0, 7)) & np.isfinite(low)

@@ -104,8 +104,8 @@ def fit_steady_sliding(V: _F64, F_par: _F64, F_perp: _F64, N: float, K: _F64, f_
 # arrays Fn, theta_joint, theta_rate_joint, theta_rate_base and int32 arrays status, iterations,
 # turning_points_beam, turning_points_spatula.
 def seta_validate(params: _F64, Ft: float = ...) -> float: ...
-# Also min_z, min_z_at, max_axial_strain (admissibility; status 7 where the seta crosses the substrate
-# or exceeds strain_limit).
+# Also min_z, min_z_at, max_axial_strain, min_stretch (admissibility; status 7 where the seta crosses
+# the substrate, has a stretch <= 0 somewhere, or exceeds strain_limit).
 def seta_critical_line_at(params: _F64, Ft: _F64, errors: int = 0, tolerance: float = ...,
                           strain_limit: float = ...) -> dict[str, Any]: ...
 # The traced nodes: Ft, Fn, ... as above plus int32 branch and status (0 re-solved, 1 not), folds, end.
@@ -240,6 +240,7 @@ class CriticalState(_Result):
     min_z: float
     min_z_at: float
     max_axial_strain: float
+    min_stretch: float
     iterations: int
 
 class SetaCharacteristicsResult(_Result):

@@ -18,7 +18,10 @@ under ``errors="nan"``; 6 not reached: the continuation gave up before this Ft (
 collapse, corrector failure; ``critical_line().end`` says which), so whether a critical state
 exists there is unknown, unlike 2; 7 inadmissible: the state solves the equations (paper 001 eq
 (15)) but the deformed seta crosses the substrate before the contact edge (``min_z < 0``: the
-joint or the beam below it), or its largest axial strain exceeds ``strain_limit``. Status-7 states
+joint or the beam below it), or a segment is compressed to zero length or beyond somewhere
+(``min_stretch <= 0``: the linear law's stretch 1 + T/EA is not positive there, a rod turned inside
+out), or its largest axial strain exceeds ``strain_limit``. A followed critical line ends at its
+first state compressed so (end "left the model"), and the Ft beyond it are status 3. Status-7 states
 keep their ``Fn``, ``theta_joint`` and the rest (for drawing); they are no state of a real seta.
 A status-7 state whose ``min_z`` is NaN is one whose height check could not be made (its
 quadrature did not close; 5 of the 60,000 states of the project's stress campaign): it is not
@@ -26,7 +29,8 @@ confirmed admissible, and not known to cross either.
 
 Every solved state reports ``min_z`` (its lowest height above the substrate over the seta, 0 when
 the contact edge is the lowest point), ``min_z_at`` (the arc length s of that point) and
-``max_axial_strain`` (the largest |T|/EA along the seta).
+``max_axial_strain`` (the largest |T|/EA along the seta) and ``min_stretch`` (the lowest
+1 + T/EA along it).
 
 Bad input raises ``ValueError`` naming the parameter and its allowed range (or, with
 ``errors="nan"``, marks the element with status 5).
@@ -68,11 +72,13 @@ STATUS = {
     0: "converged",
     1: "not converged",
     2: "no critical state on the line followed from Ft = 0 (states off that line may exist)",
-    3: "unsupported state",
+    3: "unsupported state (outside the model: past the edge of its forms, or past the followed line's "
+       "first state compressed to zero length)",
     4: "singular (at a fold)",
     5: "invalid input",
     6: "not reached (the followed line was given up before this Ft)",
-    7: "inadmissible (solves the equations but the seta crosses the substrate or the strain limit)",
+    7: "inadmissible (solves the equations but the seta crosses the substrate, is compressed to zero length "
+       "somewhere, or exceeds the strain limit)",
 }
 
 _LINE_END = {
@@ -80,7 +86,7 @@ _LINE_END = {
     1: "reached (Ft)max = sqrt(2 EA2 w)",
     2: "turned back after a fold",
     3: "no convergence (singular point)",
-    4: "left the model (axial load comparable to EA)",
+    4: "left the model (axial load comparable to EA: a segment compressed to zero length, or the edge of the forms)",
     5: "point budget exhausted",
     6: "natural state not found",
     7: "stalled (the step collapsed; given up)",
@@ -154,10 +160,11 @@ class CriticalLine:
         Traced line only: the branch index of each node.
     end_code : LineEnd or None
         Traced line only: ``end`` as a :class:`LineEnd` member (compare these in code).
-    min_z, min_z_at, max_axial_strain : numpy.ndarray or None
+    min_z, min_z_at, max_axial_strain, min_stretch : numpy.ndarray or None
         Admissibility of each solved state (status 0 or 7; NaN otherwise): the lowest height of the
         seta above the substrate (0: the contact edge; < 0: it crosses the substrate, status 7), the
-        arc length s where it is, and the largest axial strain abs(T)/EA along the seta.
+        arc length s where it is, the largest axial strain abs(T)/EA along the seta, and the lowest
+        stretch 1 + T/EA along it (<= 0: compressed to zero length somewhere, status 7).
 
     Examples
     --------
@@ -184,6 +191,7 @@ class CriticalLine:
     min_z: Optional[np.ndarray] = None
     min_z_at: Optional[np.ndarray] = None
     max_axial_strain: Optional[np.ndarray] = None
+    min_stretch: Optional[np.ndarray] = None
 
     def __len__(self) -> int:
         return int(np.size(self.Ft))
@@ -325,6 +333,9 @@ class ContactState:
         Sign changes of theta' inside the free length (beam + spatula), and per segment.
     max_axial_strain : numpy.ndarray
         Largest |T|/EA over the free length.
+    min_stretch : numpy.ndarray
+        Lowest stretch 1 + T/EA over the free length (<= 0: a segment compressed to zero length
+        somewhere, inadmissible).
     energy_release_rate : numpy.ndarray
         Left side of eq (3) at the edge; equals w at every equilibrium (a check of the state).
     min_z : numpy.ndarray
@@ -357,6 +368,7 @@ class ContactState:
     turning_points_beam: np.ndarray
     turning_points_spatula: np.ndarray
     max_axial_strain: np.ndarray
+    min_stretch: np.ndarray
     energy_release_rate: np.ndarray
     min_z: np.ndarray
     equilibria: np.ndarray
@@ -370,7 +382,7 @@ class ContactState:
 
 
 _CONTACT_FLOAT = ("a", "contact_length", "theta_joint", "theta_rate_joint", "theta_rate_base",
-                  "max_axial_strain", "energy_release_rate", "min_z")
+                  "max_axial_strain", "min_stretch", "energy_release_rate", "min_z")
 _CONTACT_INT = ("turning_points", "turning_points_beam", "turning_points_spatula")
 
 
@@ -495,7 +507,8 @@ class TwoLevelSeta:
                                 turning_points_spatula=d["turning_points_spatula"],
                                 folds=list(d["folds"]), end=_LINE_END.get(d["end"], str(d["end"])),
                                 branch=d["branch"], end_code=LineEnd(d["end"]), min_z=d["min_z"],
-                                min_z_at=d["min_z_at"], max_axial_strain=d["max_axial_strain"])
+                                min_z_at=d["min_z_at"], max_axial_strain=d["max_axial_strain"],
+                                min_stretch=d["min_stretch"])
         if not resolve_nodes:
             raise ValueError("resolve_nodes=False applies to the traced line only (critical_line() without Ft); "
                              "states at requested Ft are always solved to the tolerance")
@@ -512,7 +525,7 @@ class TwoLevelSeta:
                             turning_points_beam=shaped(d["turning_points_beam"]),
                             turning_points_spatula=shaped(d["turning_points_spatula"]),
                             min_z=shaped(d["min_z"]), min_z_at=shaped(d["min_z_at"]),
-                            max_axial_strain=shaped(d["max_axial_strain"]))
+                            max_axial_strain=shaped(d["max_axial_strain"]), min_stretch=shaped(d["min_stretch"]))
 
     def contact_state(self, Fn, Ft, *, all_equilibria: bool = False, errors: str = "raise",
                       scan_points: Optional[int] = None, threads: int = 0,
@@ -633,9 +646,10 @@ class TwoLevelSeta:
         -------
         CriticalState
             Attributes ``Ft, Fn, theta_joint, theta_rate_joint, theta_rate_base, status``
-            (:class:`CriticalStatus`; 7, values kept: the seta crosses the substrate or exceeds
-            ``strain_limit``), ``turning_points_beam, turning_points_spatula, min_z, min_z_at,
-            max_axial_strain, iterations``. Indexing it like the dict it replaces
+            (:class:`CriticalStatus`; 7, values kept: the seta crosses the substrate, is
+            compressed to zero length somewhere, or exceeds ``strain_limit``),
+            ``turning_points_beam, turning_points_spatula, min_z, min_z_at, max_axial_strain,
+            min_stretch, iterations``. Indexing it like the dict it replaces
             (``state["Fn"]``, statuses as ints) still works but is deprecated.
 
         Raises
@@ -757,7 +771,8 @@ class TwoLevelSeta:
             the solved state (joint angle and rate, edge angle, Griffith edge rate);
             ``error_estimate``, the summed local error estimates; ``shape_status`` 0 when both are
             within 1e-10 (1 not, 2 step collapse, 3 no state); the state's ``Fn``, ``status`` (7:
-            drawn, but the seta crosses the substrate), ``min_z`` and ``max_axial_strain``.
+            drawn, but the seta crosses the substrate or is compressed to zero length somewhere),
+            ``min_z``, ``max_axial_strain`` and ``min_stretch``.
 
         Examples
         --------
@@ -974,7 +989,7 @@ def critical_line_batch(designs, Ft, *, threads: int = 1, errors: str = "raise",
                         turning_points_beam=shaped(d["turning_points_beam"]),
                         turning_points_spatula=shaped(d["turning_points_spatula"]),
                         min_z=shaped(d["min_z"]), min_z_at=shaped(d["min_z_at"]),
-                        max_axial_strain=shaped(d["max_axial_strain"]))
+                        max_axial_strain=shaped(d["max_axial_strain"]), min_stretch=shaped(d["min_stretch"]))
 
 
 def kendall_fn(Ft, EA, w, *, errors: str = "raise"):

@@ -60,7 +60,8 @@ template <class S>
 auto shared_state_fields() {
   return std::make_tuple(GECKO_F(Fn), GECKO_F(theta_joint), GECKO_F(theta_rate_joint), GECKO_F(theta_rate_base),
                          GECKO_F(status), GECKO_F(turning_points_beam), GECKO_F(turning_points_spatula),
-                         GECKO_F(min_z), GECKO_F(min_z_at), GECKO_F(max_axial_strain));
+                         GECKO_F(min_z), GECKO_F(min_z_at), GECKO_F(max_axial_strain),
+                         GECKO_F(min_stretch));
 }
 
 // Columns of states at requested Ft (the caller knows Ft).
@@ -327,6 +328,7 @@ void bind_seta(py::module_& m) {
     d["Fn"] = st.Fn;
     d["min_z"] = st.min_z;
     d["max_axial_strain"] = st.max_axial_strain;
+    d["min_stretch"] = st.min_stretch;
     return d;
   }, py::arg("params"), py::arg("Ft"), py::arg("steps") = 200);
 
@@ -371,10 +373,10 @@ void bind_seta(py::module_& m) {
 namespace {
 
 struct contact_columns {
-  py::array_t<double> a, contact_length, theta_joint, rate_joint, rate_base, strain, err, min_z;
+  py::array_t<double> a, contact_length, theta_joint, rate_joint, rate_base, strain, stretch, err, min_z;
   py::array_t<std::int32_t> tp, tp_beam, tp_spatula, equilibria, status;
   explicit contact_columns(py::ssize_t n)
-      : a(n), contact_length(n), theta_joint(n), rate_joint(n), rate_base(n), strain(n), err(n), min_z(n), tp(n),
+      : a(n), contact_length(n), theta_joint(n), rate_joint(n), rate_base(n), strain(n), stretch(n), err(n), min_z(n), tp(n),
         tp_beam(n), tp_spatula(n), equilibria(n), status(n) {}
   void put(std::size_t i, const contact_result<double>& r) {
     a.mutable_data()[i] = r.a;
@@ -383,6 +385,7 @@ struct contact_columns {
     rate_joint.mutable_data()[i] = r.theta_rate_joint;
     rate_base.mutable_data()[i] = r.theta_rate_base;
     strain.mutable_data()[i] = r.max_axial_strain;
+    stretch.mutable_data()[i] = r.min_stretch;
     err.mutable_data()[i] = r.energy_release_rate;
     min_z.mutable_data()[i] = r.min_z;
     tp.mutable_data()[i] = r.turning_points;
@@ -402,6 +405,7 @@ struct contact_columns {
     d["turning_points_beam"] = tp_beam;
     d["turning_points_spatula"] = tp_spatula;
     d["max_axial_strain"] = strain;
+    d["min_stretch"] = stretch;
     d["energy_release_rate"] = err;
     d["min_z"] = min_z;
     d["equilibria"] = equilibria;

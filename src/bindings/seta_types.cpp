@@ -140,11 +140,12 @@ void bind_enums(py::module_& m) {
       {"converged", cs::converged},
       {"not_converged", cs::not_converged, "Newton did not converge from its guess"},
       {"no_critical_state", cs::no_critical_state, "the line followed from Ft = 0 does not reach this Ft"},
-      {"unsupported_state", cs::unsupported_state, "the state leaves the model's forms"},
+      {"unsupported_state", cs::unsupported_state,
+       "the state leaves the model: past the edge of its forms, or past the line's first state compressed to zero length"},
       {"singular", cs::singular, "singular Jacobian: Ft at a fold of the line"},
       {"invalid_input", cs::invalid_input, "bad input under errors='nan'"},
       {"not_reached", cs::not_reached, "the followed line was given up before this Ft: unknown, not 'none'"},
-      {"inadmissible", cs::inadmissible, "solves the equations, but the seta crosses the substrate or the strain limit"},
+      {"inadmissible", cs::inadmissible, "solves the equations, but the seta crosses the substrate, is compressed to zero length, or exceeds the strain limit"},
   });
   using le = line_end;
   bind_int_enum<le>(m, "LineEnd", "Why a followed critical line stopped.", {

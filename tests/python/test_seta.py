@@ -207,7 +207,7 @@ def test_mixed_signs_equal_each_direction_alone():
     # never leaves Ft = 0 (its positive targets are solved on the separatrix limit, its negative
     # one lies past a fold where the long-double retry's march turns back: status 2); campaign
     # design 1005, whose positive targets are solved by the long-double retry of give-ups
-    # (tests/data/seta_separatrix_reference.csv, long_double_1005); campaign design 949, whose
+    # (tests/data/seta_separatrix_reference.csv, long_double_1005); campaign design 1138, whose
     # negative target is given up (status 6).
     cases = [
         (gecko.TwoLevelSeta(), [-3.0, 0.0, 2.0, -0.5, 9.0]),
@@ -219,10 +219,10 @@ def test_mixed_signs_equal_each_direction_alone():
                             EA2=87772.04693377482, l1=1.0, l2=0.09695729933128887,
                             alpha1=1.006282082105714, alpha2=0.2716690124304871, w=1.0),
          [-116.02457981371899, 0.0, 164.2456444511225, 210.259320846518, 377.08184261870156]),
-        (gecko.TwoLevelSeta(EI1=2.897851045953516, EI2=365.9287441863494, EA1=3.4236860772071642,
-                            EA2=257283.5563511228, l1=1.0, l2=0.0032178833728294764,
-                            alpha1=1.1336563374587927, alpha2=0.394973818164146, w=1.0),
-         [-214.31980986098, 0.0, 521.5352044807915, 315.9429609644715, 645.6000009981559]),
+        (gecko.TwoLevelSeta(EI1=0.5421669712904107, EI2=47.673083959971024, EA1=374037.1413891302,
+                            EA2=90451.84182407723, l1=1.0, l2=0.0011356885913837145,
+                            alpha1=0.22548794524791066, alpha2=1.033968993181213, w=1.0),
+         [-403.50252950485987, 0.0, 214.9361214716802, 264.0005747706312, 382.7949630742352]),
     ]
     fields = ("Fn", "theta_joint", "status", "turning_points_beam", "turning_points_spatula",
               "theta_rate_joint", "theta_rate_base", "min_z")
@@ -335,6 +335,30 @@ def test_strain_limit():
         s.critical_line(Ft=[1.0], strain_limit=float("nan"))
     c = s.characteristics(strain_limit=0.1)
     assert c.min_status == "admissible_end" and c.admissible_end_ft <= 5.0 + 1e-9
+
+
+def test_a_segment_compressed_to_zero_length_is_inadmissible_and_ends_the_line():
+    # Design 6580 of the 10,000-design re-run: towards negative Ft its beam's compression reaches
+    # EA1 near Ft = -530.8, where the stretch 1 + T/EA1 passes zero (a rod of negative length
+    # beyond). The followed line ends there, "left the model"; the Ft beyond it are status 3.
+    s = gecko.TwoLevelSeta(EI1=9.234011903410433, EI2=8632.183289992317, EA1=1898.1613549209487,
+                           EA2=335194.8826055024, l2=0.08155494130194677, alpha1=1.474315464438074,
+                           alpha2=0.028604678886875907)
+    at = s.critical_line(Ft=[-726.3553702242612, -300.0])
+    assert at.status.tolist() == [3, 0] and np.isnan(at.min_stretch[0]) and 0 < at.min_stretch[1] < 1
+    line = s.critical_line(ft_end=-726.3553702242612)
+    assert line.end_code == gecko.LineEnd.unsupported_state and "compressed to zero length" in line.end
+    assert line.min_stretch[-1] <= 0 < line.min_stretch[-2] and line.status[-1] == 7
+    assert -560 < line.Ft[-1] < -500
+    assert "compressed to zero length" in gecko.STATUS[7] and "compressed to zero length" in gecko.STATUS[3]
+    # The reference design's beam is inextensible (stretch 1) and its spatula stretches: every state
+    # reports a stretch in (0, 1], the one-state solve and the forward problem as well.
+    ref = gecko.TwoLevelSeta()
+    r = ref.critical_line(Ft=[0.0, 5.0, 9.5])
+    assert ((r.min_stretch > 0) & (r.min_stretch <= 1)).all()
+    assert ref.solve(5.0).min_stretch == r.min_stretch[1]
+    c = ref.contact_state([-1.0, 0.0], 2.0)
+    assert c.status.tolist() == [0, 0] and ((c.min_stretch > 0) & (c.min_stretch <= 1)).all()
 
 
 def test_characteristics_admissible_part_bound_and_k():

@@ -583,3 +583,22 @@ def test_verify_timing_compares_outputs_to_the_bit():
     assert verify_timing.differing_keys(a, {k: v.copy() for k, v in a.items()}) == []
     assert verify_timing.differing_keys(a, {"dFn": np.array([1.0, np.nan]), "steps": np.array([16, 33])}) == ["steps"]
     assert verify_timing.differing_keys(a, {"dFn": np.array([np.nextafter(1.0, 2.0), np.nan])}) == ["dFn", "steps"]
+
+
+def test_stretch_check_of_a_line_that_leaves_the_model():
+    # validation/stretch.py checks the stretch rule with its own ODE shot: at design 6580's line
+    # towards Ft = -726.36 (tests/seta/admissibility.cpp), the last node is compressed to zero
+    # length and the node before it is not, and the target lies beyond the line.
+    pytest.importorskip("scipy")
+    from validation import stretch
+    p = [9.234011903410433, 8632.183289992317, 1898.1613549209487, 335194.8826055024, 1.0,
+         0.08155494130194677, 1.474315464438074, 0.028604678886875907, 1.0]
+    line = stretch._seta(p).critical_line(ft_end=-726.3553702242612)
+    last = stretch.stretch_verdict(p, line.Fn[-1], line.Ft[-1], line.theta_joint[-1])
+    before = stretch.stretch_verdict(p, line.Fn[-2], line.Ft[-2], line.theta_joint[-2])
+    assert last["stretch"] == "nonpositive" and before["stretch"] == "positive"
+    assert before["base_miss"] < 1e-6 and abs(before["shot_min_stretch"] - line.min_stretch[-2]) < 1e-9
+    assert stretch.check_beyond_line(p, -726.3553702242612)["verdict"] == "beyond_first_inverted_node"
+    # A segment end compressed past EA decides without a shot (the base at Fn = 1e5: 1 - 4.4).
+    v = stretch.stretch_verdict(p, 1e5, -726.0, 0.0)
+    assert v["stretch"] == "nonpositive" and v["by"] == "segment_end" and v["lowest_end_stretch"] < -4

@@ -21,6 +21,7 @@ namespace {
 
 struct dense_result {
   long double min_z, where, max_strain, edge_theta;
+  long double min_stretch = 1;  // the lowest 1 + T/EA over the samples (dense_reference_from_edge)
 };
 
 // The governing ODE (paper 001 eqs (1)-(2)) for theta, theta' and z along s, in long double, with
@@ -33,6 +34,7 @@ struct dense_ode {
         c2(std::isinf(s.EA2) ? 0.0L : 1.0L / s.EA2) {}
   long double axial(const Y& y) const { return Ft * std::sin(y.th) - Fn * std::cos(y.th); }
   long double strain(const Y& y, long double c) const { return std::fabs(c * axial(y)); }
+  long double stretch(const Y& y, long double c) const { return 1 + c * axial(y); }
   Y rhs(const Y& y, long double EI, long double c) const {
     const long double T = axial(y);
     return Y{y.om, -(Fn * std::sin(y.th) + Ft * std::cos(y.th)) * (1 + c * T) / EI, -(1 + c * T) * std::cos(y.th)};
@@ -124,7 +126,7 @@ dense_result dense_reference_from_edge(const gecko::TwoLevelSeta<double>& s, con
   long double best_miss = std::numeric_limits<long double>::infinity();
   for (const long double sign : {1.0L, -1.0L}) {
     Y y{pi_2, sign * rate, 0};
-    dense_result r{0, s.l1 + s.l2, strain(y, c2), 0};
+    dense_result r{0, s.l1 + s.l2, strain(y, c2), 0, ode.stretch(y, c2)};
     auto run = [&](long double len, long double EI, long double c, long double s_end) {
       const int n = std::max(400, static_cast<int>(steps_per_unit * len));
       const long double h = -len / n;
@@ -134,6 +136,11 @@ dense_result dense_reference_from_edge(const gecko::TwoLevelSeta<double>& s, con
         prev = y;
         y = ode.step(y, h, EI, c);
         r.max_strain = std::max(r.max_strain, strain(y, c));
+        r.min_stretch = std::min(r.min_stretch, ode.stretch(y, c));
+        if (i >= 1) {  // an interior minimum of the stretch at the previous sample: refined the same way
+          const long double a = ode.stretch(prev2, c), b = ode.stretch(prev, c), e = ode.stretch(y, c);
+          if (b < a && b < e && a - 2 * b + e > 0) r.min_stretch = std::min(r.min_stretch, parabola_extremum(a, b, e));
+        }
         if (y.z < r.min_z) {
           r.min_z = y.z;
           r.where = s_end + h * (i + 1);
@@ -148,6 +155,7 @@ dense_result dense_reference_from_edge(const gecko::TwoLevelSeta<double>& s, con
     y.th -= s.alpha2;
     y.om *= s.EI2 / s.EI1;
     r.max_strain = std::max(r.max_strain, strain(y, c1));
+    r.min_stretch = std::min(r.min_stretch, ode.stretch(y, c1));
     run(s.l1, s.EI1, c1, s.l1);
     if (miss < best_miss) {
       best_miss = miss;
@@ -495,6 +503,11 @@ TEST_CASE("states the check once left unmade: large strains and turning angles n
     CHECK(std::fabs(chk.min_z - static_cast<double>(ref.min_z)) < 1e-9);
     CHECK(std::fabs(chk.max_axial_strain - static_cast<double>(ref.max_strain)) < 1e-9);
     CHECK(chk.crosses_substrate == (ref.min_z < -1e-9));
+    // The lowest stretch: a beam compressed past EA1 (3652, 2544) is turned inside out there, a
+    // state no rod takes, inadmissible whatever its heights.
+    CHECK(std::fabs(chk.min_stretch - static_cast<double>(ref.min_stretch)) < 1e-9);
+    CHECK(chk.inverted == (ref.min_stretch <= 0));
+    if (chk.inverted) CHECK_FALSE(chk.admissible);
   }
 }
 
@@ -554,7 +567,7 @@ TEST_CASE("a beam on its separatrix within rounding: the verdict does not depend
 
 TEST_CASE("beams on their separatrix within rounding that cross the substrate: min_z against the arbitrary-precision shot",
           "[seta][admissibility][stress]") {
-  // Three states of the 10,000-design re-run (validation/data/stress_10000_states.npz, designs 9769,
+  // States of the 10,000-design re-run (validation/data/stress_10000_states.npz, designs 9769,
   // 6580 and 261 at their negative Ft; 44 to 56 saddle time constants of beam) that came back with
   // status 0 and min_z = 0 before the check took the saddle as the turning angle of a beam whose
   // first integral, formed from the rates, puts it past its separatrix in rounding. The reference is
@@ -564,11 +577,11 @@ TEST_CASE("beams on their separatrix within rounding that cross the substrate: m
   struct row {
     double EI1, EI2, EA1, EA2, l2, alpha1, alpha2, Ft, min_z;
   };
+  // Design 6580 at Ft = -726.36 was a third: its beam's stretch passes zero on the way there, so the
+  // line now ends before it (status 3, "a followed line whose beam is compressed to zero length").
   const row rows[] = {
       {0.4427787486194838, 160.2623296450165, 1566678.1705902521, 13044.352108849595, 0.02248864069289234,
        1.49617569899873, 0.018790215510938044, -128.5524701284602, -0.8577339290675122},
-      {9.234011903410433, 8632.183289992317, 1898.1613549209487, 335194.8826055024, 0.08155494130194677,
-       1.474315464438074, 0.028604678886875907, -726.3553702242612, -3.7036483670030678},
       {1.7583361218925642, 234.20786545000487, 3661438.1821068637, 24649236.215905342, 0.0484030099512882,
        0.15480997477229064, 0.1823488908348738, -4114.740444567308, -0.5749009793701064},
   };
@@ -581,4 +594,66 @@ TEST_CASE("beams on their separatrix within rounding that cross the substrate: m
     CHECK(st.turning_points_beam == 1);
     CHECK(std::fabs(st.min_z - r.min_z) < 1e-9 * (1.0 + r.l2));
   }
+}
+
+TEST_CASE("a followed line whose beam is compressed to zero length leaves the model there",
+          "[seta][admissibility][stress]") {
+  // Design 6580 of the 10,000-design re-run (validation/data/stress_10000_states.npz): followed
+  // towards its negative Ft, the beam's compression grows until T reaches -EA1 near Ft = -530.8,
+  // where the linear law's stretch 1 + T/EA1 passes zero. The line ends at its first node past
+  // that (line_end::unsupported_state), that node is kept and judged inadmissible, and the
+  // campaign's Ft = -726.36 beyond it is status 3 (it was status 7, a state whose beam had a
+  // negative length). The stretch of the two last nodes is checked against the dense ODE
+  // evaluation shot from the contact edge.
+  const gecko::TwoLevelSeta<double> s{9.234011903410433, 8632.183289992317, 1898.1613549209487, 335194.8826055024,
+                                      1.0, 0.08155494130194677, 1.474315464438074, 0.028604678886875907, 1.0};
+  gecko::critical_line_options<double> o;
+  o.ft_end = -726.3553702242612;
+  const auto line = gecko::critical_line(s, o);
+  REQUIRE(line.points.size() >= 2);
+  CHECK(line.end == gecko::line_end::unsupported_state);
+  const auto& last = line.points.back();
+  const auto& before = line.points[line.points.size() - 2];
+  INFO("last node Ft " << last.Ft << " min_stretch " << last.min_stretch << ", before it " << before.min_stretch);
+  CHECK(last.min_stretch <= 0);
+  CHECK(before.min_stretch > 0);
+  CHECK(last.status == gecko::critical_status::inadmissible);
+  CHECK(last.Ft < -500.0);
+  CHECK(last.Ft > -560.0);
+  for (const auto* p : {&before, &last}) {
+    gecko::critical_state<double> st;
+    st.Ft = p->Ft; st.Fn = p->Fn; st.theta_joint = p->theta_joint;
+    st.theta_rate_base = p->theta_rate_base; st.theta_rate_joint = p->theta_rate_joint;
+    st.turning_points_beam = p->turning_points_beam; st.turning_points_spatula = p->turning_points_spatula;
+    st.status = gecko::critical_status::converged;
+    const auto ref = dense_reference_from_edge(s, st);
+    CHECK(std::fabs(p->min_stretch - static_cast<double>(ref.min_stretch)) < 1e-9);
+    const auto chk = gecko::admissibility_check(s, st);
+    CHECK(chk.inverted == (p == &last));
+  }
+  const auto at = gecko::critical_line_at(s, std::vector<double>{-726.3553702242612, -300.0});
+  CHECK(at[0].status == gecko::critical_status::unsupported_state);
+  CHECK(at[1].status == gecko::critical_status::converged);
+  CHECK(at[1].min_stretch > 0);
+  CHECK(at[1].min_stretch < 1);  // the beam is compressed there
+}
+
+TEST_CASE("a line that ran along the edge of the forms with its beam past zero length: status 3, not given up",
+          "[seta][admissibility][stress]") {
+  // Design 1351 of the 10,000-design re-run: its line towards Ft = -4325.98 passed a beam stretch of
+  // zero and then crept along the edge of the forms (f4's root at u = -1, the beam compressed to a
+  // stretch of -3.8 at its joint) until its step collapsed: the target was status 6, given up
+  // (validation/README.md, "Lines that run along the edge of the forms"). The line now ends where
+  // the stretch first reaches zero, and the target beyond is outside the model.
+  const gecko::TwoLevelSeta<double> s{0.12447762359910051, 0.0005877794453459785, 3.574302925688437, 39737401.3417575,
+                                      1.0, 0.002637651785474554, 0.9963094041055244, 0.11285065550888966, 1.0};
+  const auto at = gecko::critical_line_at(s, std::vector<double>{-4325.9810090173605, 0.0});
+  CHECK(at[0].status == gecko::critical_status::unsupported_state);
+  gecko::critical_line_options<double> o;
+  o.ft_end = -4325.9810090173605;
+  const auto line = gecko::critical_line(s, o);
+  CHECK(line.end == gecko::line_end::unsupported_state);
+  REQUIRE(line.points.size() >= 2);
+  CHECK(line.points.back().min_stretch <= 0);
+  CHECK(line.points[line.points.size() - 2].min_stretch > 0);
 }

@@ -149,7 +149,11 @@ TEST_CASE("the line reaches (Ft)max for random designs, and is solved there", "[
 // R) vanishes at u = -1 (b4 = 1, an axial load comparable to EA1). Past that the forms do not
 // exist, the corrector's plan evaluates to NaN at every predictor, and the step collapsed: the
 // line ended as no_convergence and its states beyond as not_reached (status 6, "unknown").
-// They are unsupported (status 3). Design 982 of the stress campaign
+// The continuation (detail::follow_line) ends it as unsupported_state at that edge. Before the
+// edge, the stretch 1 + T/EA1 of the beam passes zero (it vanishes at u = -1/(c N), f4's root lies
+// at u = -(1 + sqrt(1 + 2 c M))/(c N)), and the critical line now ends there, at its first node
+// compressed to zero length (line_trace.hpp's end_at_inverted_state): the targets beyond are
+// unsupported (status 3) all the same. Design 982 of the stress campaign
 // (validation/data/stress_10000_states.npz).
 TEST_CASE("a line that reaches the edge of the forms ends as unsupported, not as a failure",
           "[seta][line_end][regression]") {
@@ -164,22 +168,48 @@ TEST_CASE("a line that reaches the edge of the forms ends as unsupported, not as
   s.alpha2 = 0x1.648694b7485b6p-1;
   s.w = 1;
   const double Ft = -0x1.9bb0923a6fbd9p+10;
+  // b4 = c N / (1 + sqrt(1 + 2 c M1)) with c = 1/EA1 at a state; the beam's M1 follows from the
+  // base (R1 = EI1 theta1'(0)^2 / 2 = M1 - N u0 - c N^2 u0^2 / 2, u0 = sin(alpha1 - phi)).
+  auto b4_of = [&](double Fn, double Fta, double rate_base) {
+    const double N = std::hypot(Fn, Fta), c = 1 / s.EA1;
+    const double u0 = std::sin(s.alpha1 - std::atan2(Fn, Fta));
+    const double M1 = s.EI1 * rate_base * rate_base / 2 + N * u0 + c * N * N * u0 * u0 / 2;
+    return c * N / (1 + std::sqrt(1 + 2 * c * M1));
+  };
+  {  // The continuation alone, from the natural state, runs on to the edge of the forms.
+    using System = gecko::detail::seta_system<double, gecko::policies::default_policy, true, true>;
+    const System sys(gecko::detail::make_seta_params(s));
+    System::vec z0;
+    System::plan_type plan0;
+    gecko::critical_state<double> natural;
+    REQUIRE(gecko::detail::start_line(sys, z0, plan0, natural));
+    gecko::detail::continuation_options<double> copt;
+    copt.ft_max = sys.mu_limit();
+    copt.ft_stop = gecko::detail::line_parameter(sys, Ft);
+    copt.scale = std::max(std::fabs(Ft), std::sqrt(s.EI1 * s.w) / s.l1);
+    copt.tolerance = 1e-10;
+    const auto raw = gecko::detail::follow_line(sys, z0, 0.0, plan0, -1, copt);
+    CHECK(raw.end == gecko::line_end::unsupported_state);
+    REQUIRE(!raw.nodes.empty());
+    const auto& e = raw.nodes.back();
+    const double b4 = b4_of(e.z[0], sys.ft_of(e.Ft), sys.rate_base(e.z));
+    INFO("last raw node Ft " << sys.ft_of(e.Ft) << " b4 " << b4);
+    CHECK(std::fabs(b4 - 1) < 1e-3);
+  }
   gecko::critical_line_options<double> opt;
   opt.ft_end = Ft;
   const auto line = gecko::critical_line(s, opt);
   CHECK(line.end == gecko::line_end::unsupported_state);
-  REQUIRE(!line.points.empty());
+  REQUIRE(line.points.size() >= 2);
   const auto& last = line.points.back();
-  // Re-solved (the seta crosses the substrate there: inadmissible, a solved state all the same).
-  CHECK((last.status == gecko::critical_status::converged || last.status == gecko::critical_status::inadmissible));
-  // The edge: b4 = c N / (1 + sqrt(1 + 2 c M1)) = 1 with c = 1/EA1; the beam's M1 follows from
-  // the base (R1 = EI1 theta1'(0)^2 / 2 = M1 - N u0 - c N^2 u0^2 / 2, u0 = sin(alpha1 - phi)).
-  const double N = std::hypot(last.Fn, last.Ft), c = 1 / s.EA1;
-  const double u0 = std::sin(s.alpha1 - std::atan2(last.Fn, last.Ft));
-  const double M1 = s.EI1 * last.theta_rate_base * last.theta_rate_base / 2 + N * u0 + c * N * N * u0 * u0 / 2;
-  const double b4 = c * N / (1 + std::sqrt(1 + 2 * c * M1));
+  // Re-solved (the seta crosses the substrate there: inadmissible, a solved state all the same),
+  // compressed to zero length, the node before it not; short of the edge of the forms.
+  CHECK(last.status == gecko::critical_status::inadmissible);
+  CHECK(last.min_stretch <= 0);
+  CHECK(line.points[line.points.size() - 2].min_stretch > 0);
+  const double b4 = b4_of(last.Fn, last.Ft, last.theta_rate_base);
   INFO("last node Ft " << last.Ft << " b4 " << b4);
-  CHECK(std::fabs(b4 - 1) < 1e-3);
+  CHECK(b4 < 1);
   const auto at = gecko::critical_line_at(s, std::vector<double>{Ft});
   CHECK(at[0].status == gecko::critical_status::unsupported_state);
 }

@@ -432,17 +432,18 @@ TEST_CASE("the march in arclength passes folds of the line in Ft", "[seta][separ
 
 TEST_CASE("a march that comes back over the line's start after a fold has turned back: no critical state beyond",
           "[seta][separatrix]") {
-  // Campaign design 148 towards negative Ft: the march on the beam's separatrix meets a fold at
-  // Ft = -539.84 and, in arclength (the long-double retry), comes back over Ft = 0. The forces
+  // Campaign design 146 towards negative Ft: the march on the beam's separatrix meets a fold at
+  // Ft = -131.93155 and, in arclength (the long-double retry), comes back over Ft = 0. The forces
   // beyond the fold have no critical state on the line (status 2), as beyond a followed line that
   // turns back; before this they stayed not reached (status 6). The fold is checked in arbitrary
   // precision by validation/folds.py --parabola (validation/README.md, "Targets past a
-  // turned-back march"): the line's states short of it follow the square-root law, and the shot
-  // finds the partner root on their path where that law puts it. Short of the fold the state is
-  // the march's in Ft.
-  const gecko::TwoLevelSeta<double> s{2.174062353116032, 94.20809833552384, 232.92834007754806, 5564848.126082358,
-                                      1.0, 0.9597805066145328, 0.2843851990750305, 0.09955851484454228, 1.0};
-  const auto got = gecko::critical_line_at(s, std::vector<double>{-539.8, -539.9, -2751.7530609210785});
+  // turned-back march"; validation/results/folds_parabola_sample.json): the line's states short of
+  // it follow the square-root law, and the shot finds the partner root on their path where that
+  // law puts it. Short of the fold the state is the march's in Ft. (Design 148 held this case
+  // until the line's first state compressed to zero length ended it, before that fold: status 3.)
+  const gecko::TwoLevelSeta<double> s{0.15977275855014858, 47.77421877194483, 4511.554739042326, 50773.842822281484,
+                                      1.0, 0.008311236730929763, 0.9525727277960906, 0.5054364768402785, 1.0};
+  const auto got = gecko::critical_line_at(s, std::vector<double>{-131.93, -131.94, -144.3074971951446});
   INFO("statuses " << static_cast<int>(got[0].status) << " " << static_cast<int>(got[1].status) << " "
                    << static_cast<int>(got[2].status));
   CHECK((got[0].status == gecko::critical_status::converged || got[0].status == gecko::critical_status::inadmissible));
@@ -456,13 +457,15 @@ TEST_CASE("a line that stopped inside what it covered after a fold goes on in ar
           "[seta][separatrix]") {
   // The followed line towards negative Ft folds, heads back towards Ft = 0 and stalls there, inside
   // the range it covered: the targets beyond its fold were status 6. The long-double retry marches
-  // from the stall along the line's own tangent on the separatrix limit: design 3681's march comes
-  // back over Ft = 0 (turned back: status 2 beyond the fold), design 5337's folds again and first
-  // crosses its target beyond the reach (solved). validation/README.md, "Lines stopped inside what
-  // they covered".
-  const gecko::TwoLevelSeta<double> back{0.18036420956375876, 2.107798904215288, 22.771200077804355, 5136996.937218147,
-                                         1.0, 0.6589906301828736, 1.3374094040535764, 0.21820611143038066, 1.0};
-  const auto b = gecko::critical_line_at(back, std::vector<double>{-2032.3327476392599, 0.0, 343.882524615205});
+  // from the stall along the line's own tangent on the separatrix limit: design 4165's march comes
+  // back over Ft = 0 (turned back: status 2 beyond its fold at Ft = -36.45), design 5337's folds
+  // again and first crosses its target beyond the reach (solved). validation/README.md, "Lines
+  // stopped inside what they covered" (validation/results/folds_parabola_inside.json: 4165's fold
+  // confirmed in arbitrary precision). Design 3681 held the first case until its line's first
+  // state compressed to zero length ended it (status 3).
+  const gecko::TwoLevelSeta<double> back{0.1693707417976444, 2.8705002184822246, 102991.50250920083, 908725.7286198998,
+                                         1.0, 0.6226536725921479, 0.04239728296999268, 1.2450321716546784, 1.0};
+  const auto b = gecko::critical_line_at(back, std::vector<double>{-519.0255191611686, 0.0, 411.3077377948683});
   CHECK(b[0].status == gecko::critical_status::no_critical_state);
   CHECK(b[1].status == gecko::critical_status::converged);
   CHECK(b[2].status == gecko::critical_status::converged);

@@ -10,8 +10,8 @@
 // Height. With x along the substrate towards the contact and z the height above it (the edge at
 // z = 0), dz/ds = -(1 + T/EA) cos(theta) (the convected coordinate s of eqs (1)-(2)). So z can only
 // have a minimum before the edge where dz/ds changes sign: where theta crosses +-pi/2 (mod 2 pi),
-// where the stretch 1 + T/EA vanishes (a compression of EA or more, which the extensible model
-// allows), or at a segment end.
+// where the stretch 1 + T/EA vanishes (a compression of EA or more, which the equations allow but
+// no rod can take: such a state is inadmissible, below), or at a segment end.
 //   * Fast, exact test (almost every state): when theta stays in [-pi/2, pi/2] along both segments
 //     and 1 + T/EA > 0 (T's lowest value above -EA; tension never stops it), z decreases
 //     monotonically from the base to the edge, so min z = 0 at the edge. Theta's range on a
@@ -50,7 +50,13 @@
 //     is the joint. Each quadrature node costs one sincos (height_gl_chi, height_gl).
 //     The minimum over the candidates is exact up to the quadrature tolerance: no sampling in s.
 // Strain. The largest |T|/EA of each segment over theta's range (T = N sin(psi): +-N where the
-// range contains psi = +-pi/2 mod 2 pi, else the ends), 0 for EA = infinity.
+// range contains psi = +-pi/2 mod 2 pi, else the ends), 0 for EA = infinity; and the lowest
+// stretch 1 + T/EA the same way. A stretch <= 0 somewhere (T <= -EA) maps a piece of the rod to
+// zero or negative length: the extensible elastica's linear law still solves there (the first
+// integral's R(u) = M - N u - c N^2 u^2/2 has R' = -N (1 + c N u), so the stretch vanishes at the
+// top of R, and the edge of the forms, f4's root, lies beyond it), but no rod is turned inside
+// out, so the state is inadmissible (`inverted`) whatever the strain limit. The followed critical
+// line ends at its first such state (gecko/seta/detail/line_trace.hpp).
 #pragma once
 
 #include <cmath>
@@ -68,13 +74,19 @@ namespace gecko {
 // The verdict on one state.
 template <class T>
 struct admissibility_result {
-  // true: min_z >= -1e-12 (l1 + l2) and (with a strain limit) max_axial_strain <= strain_limit.
+  // true: min_z >= -1e-12 (l1 + l2), min_stretch > 0 and (with a strain limit) max_axial_strain <=
+  // strain_limit.
   bool admissible = false;
   bool crosses_substrate = false;  // min_z < -1e-12 (l1 + l2): part of the seta below the substrate
   bool strain_exceeded = false;    // max_axial_strain > strain_limit
+  // min_stretch <= 0: a segment compressed to zero length or beyond somewhere (T <= -EA). The
+  // linear law 1 + T/EA then gives a negative stretch, a rod turned inside out, which no seta can
+  // be: inadmissible whatever the strain limit.
+  bool inverted = false;
   T min_z = std::numeric_limits<T>::quiet_NaN();  // lowest height over [0, a] (0 at the edge itself)
   T where = std::numeric_limits<T>::quiet_NaN();  // arc length s of that point (a: the edge)
   T max_axial_strain = std::numeric_limits<T>::quiet_NaN();  // max over s of |T(s)|/EA(s)
+  T min_stretch = std::numeric_limits<T>::quiet_NaN();       // min over s of 1 + T(s)/EA(s)
   bool exact_fast_path = false;  // theta stayed within [-pi/2, pi/2]: no quadrature was needed
 };
 
@@ -671,13 +683,41 @@ inline void segment_force_range(T N, T phi, const theta_range<T>& r, T& t_min, T
   if (ceil((r.lo - phi + pi / 2) / (2 * pi)) * 2 * pi - pi / 2 + phi <= r.hi) t_min = -N;
 }
 
-// The verdict from a known lowest height r.min_z (NaN: not known) and the largest axial strain.
+// The range of T/EA over the seta, one segment at a time: lo and hi start at 0 (for the largest
+// |T|/EA), least is the lowest T/EA itself (0 on an inextensible segment, whose stretch is 1).
 template <class T>
-inline admissibility_result<T> finish_admissibility(admissibility_result<T> r, T strain, T z_tol, T strain_limit) {
-  r.max_axial_strain = strain;
+struct strain_extremes {
+  T lo = 0, hi = 0;
+  T least = std::numeric_limits<T>::infinity();
+  // One segment with 1/EA = c and T between t_lo and t_hi.
+  void add(T c, T t_lo, T t_hi) {
+    if (!(c > 0)) {
+      if (least > 0) least = 0;
+      return;
+    }
+    if (c * t_lo < lo) lo = c * t_lo;
+    if (c * t_hi > hi) hi = c * t_hi;
+    if (c * t_lo < least) least = c * t_lo;
+  }
+};
+
+// The strain part of the verdict, from the range of T/EA over the seta: the largest |T|/EA, the
+// lowest stretch 1 + T/EA, and whether either rules the state out.
+template <class T>
+inline void set_strain_verdict(admissibility_result<T>& r, const strain_extremes<T>& e, T strain_limit) {
+  r.max_axial_strain = e.hi > -e.lo ? e.hi : -e.lo;
+  r.min_stretch = 1 + e.least;
+  r.strain_exceeded = r.max_axial_strain > strain_limit;
+  r.inverted = r.min_stretch <= 0;  // NaN (theta's range unknown): not decided here
+}
+
+// The verdict from a known lowest height r.min_z (NaN: not known) and the range of T/EA.
+template <class T>
+inline admissibility_result<T> finish_admissibility(admissibility_result<T> r, const strain_extremes<T>& e, T z_tol,
+                                                    T strain_limit) {
+  set_strain_verdict(r, e, strain_limit);
   r.crosses_substrate = r.min_z < -z_tol;
-  r.strain_exceeded = strain > strain_limit;
-  r.admissible = !r.crosses_substrate && !r.strain_exceeded && r.min_z == r.min_z;
+  r.admissible = !r.crosses_substrate && !r.strain_exceeded && !r.inverted && r.min_z == r.min_z;
   return r;
 }
 
@@ -719,16 +759,18 @@ inline T first_integral_constant(T EI, T c, T N, T rate, T u, T& scale) {
 
 // The general path of admissibility_imp (turning points, or theta leaving [-pi/2, pi/2]): kept
 // apart so that admissibility_imp, the common case (theta monotone and within [-pi/2, pi/2]),
-// stays a small function. f: the pose's frame (forces and beta not NaN).
+// stays a small function. f: the pose's frame (forces and beta not NaN). strain_only: the strain
+// and stretch alone (theta's ranges, no quadrature of the height; min_z stays NaN).
 template <class T>
 inline admissibility_result<T> admissibility_general(const seta_params<T>& d, const seta_pose<T>& st,
-                                                     const pose_frame<T>& f, T strain_limit) {
+                                                     const pose_frame<T>& f, T strain_limit,
+                                                     bool strain_only = false) {
   using std::atan2; using std::cos; using std::fabs; using std::sin; using std::sqrt;
   admissibility_result<T> r;
   const T half_pi = seta_pi<T>() / 2;
   const T L = f.L, free2 = f.free2, a_edge = f.a_edge, Fn = f.Fn, Ft = f.Ft, beta = f.beta, th_j1 = f.th_j1;
   const int n1 = f.n1, n2 = f.n2;
-  auto finish = [&](T strain) { return finish_admissibility(r, strain, f.z_tol, strain_limit); };
+  auto finish = [&](const strain_extremes<T>& e) { return finish_admissibility(r, e, f.z_tol, strain_limit); };
   // General path: quadrature of z over the monotone pieces. The sines and cosines of the angles
   // relative to the force direction phi come from those of beta, alpha1, alpha2 and phi (sin phi =
   // Fn/N, cos phi = Ft/N) by angle addition: one sincos and one atan2 (phi itself, for the 2 pi
@@ -790,25 +832,26 @@ inline admissibility_result<T> admissibility_general(const seta_params<T>& d, co
   const T lo1 = r1.lo, hi1 = r1.hi, lo2 = r2.lo, hi2 = r2.hi;
   // The axial strain T/EA over both segments: its largest magnitude is reported; its lowest value
   // (the largest compression) decides whether the stretch 1 + T/EA stays positive.
-  T t_min = 0, t_max = 0;
+  strain_extremes<T> e;
   auto strain_range = [&](T c, const theta_range<T>& rg) {
-    if (!(c > 0)) return;
-    T a, b;
-    segment_force_range(N, phi, rg, a, b);
-    if (c * a < t_min) t_min = c * a;
-    if (c * b > t_max) t_max = c * b;
+    T a = 0, b = 0;
+    if (c > 0) segment_force_range(N, phi, rg, a, b);
+    e.add(c, a, b);
   };
   // A segment whose theta stays in [-pi/2, pi/2] with a positive stretch has z decreasing along it.
   strain_range(d.c1, r1);
-  const bool beam_monotone = t_min > -1 && lo1 >= -half_pi && hi1 <= half_pi;
+  const bool beam_monotone = e.lo > -1 && lo1 >= -half_pi && hi1 <= half_pi;
   strain_range(d.c2, r2);
-  const T strain = t_max > -t_min ? t_max : -t_min;
-  if (beam_monotone && t_min > -1 && lo2 >= -half_pi && hi2 <= half_pi) {  // the spatula too
+  if (strain_only) {
+    set_strain_verdict(r, e, strain_limit);
+    return r;
+  }
+  if (beam_monotone && e.lo > -1 && lo2 >= -half_pi && hi2 <= half_pi) {  // the spatula too
     // Turning points, but theta stays within [-pi/2, pi/2]: z is monotone all the same.
     r.min_z = 0;
     r.where = a_edge;
     r.exact_fast_path = true;
-    return finish(strain);
+    return finish(e);
   }
   const T tol = T(1e-13) * L;
   const T len_tol = T(1e-9) * L;
@@ -837,9 +880,8 @@ inline admissibility_result<T> admissibility_general(const seta_params<T>& d, co
   const segment_walk<T> w2 = walk(g2, beta, p, half_pi, n2, free2, m_tol2);
   const bool ok = w1.ok && w2.ok;
   if (!ok) {
-    // The decomposition did not close: no verdict on z.
-    r.max_axial_strain = strain;
-    r.strain_exceeded = strain > strain_limit;
+    // The decomposition did not close: no verdict on z (the strain's is known).
+    set_strain_verdict(r, e, strain_limit);
     return r;
   }
   // The base (or the joint, for a beam not walked) at z = 0, then shift so that the contact edge is
@@ -860,7 +902,7 @@ inline admissibility_result<T> admissibility_general(const seta_params<T>& d, co
     r.min_z = 0;
     r.where = a_edge;
   }
-  return finish(strain);
+  return finish(e);
 }
 
 // The range [lo, hi] of the axial force T(theta) = Ft sin(theta) - Fn cos(theta) over an interval
@@ -941,15 +983,18 @@ inline bool spatula_first_integral_bars_level(const seta_params<T>& d, const set
 }
 
 // The check on design parameters d (1/EA as c1, c2) and a pose; strain_limit: +inf for none.
+// strain_only: the strain and the stretch alone (max_axial_strain, min_stretch, strain_exceeded,
+// inverted), without the height: what the followed line checks at each node (line_trace.hpp).
 template <class T>
-inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const seta_pose<T>& st, T strain_limit) {
+inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const seta_pose<T>& st, T strain_limit,
+                                                 bool strain_only = false) {
   using std::cos; using std::sin; using std::sqrt;
   admissibility_result<T> r;
   const pose_frame<T> f = make_pose_frame(d, st);
   if (!(f.Fn == f.Fn) || !(f.Ft == f.Ft) || !(f.beta == f.beta)) return r;
   const T half_pi = seta_pi<T>() / 2;
   const T Fn = f.Fn, Ft = f.Ft, beta = f.beta, th_j1 = f.th_j1;
-  auto finish = [&](T strain) { return finish_admissibility(r, strain, f.z_tol, strain_limit); };
+  auto finish = [&](const strain_extremes<T>& e) { return finish_admissibility(r, e, f.z_tol, strain_limit); };
   // theta's range on each segment is that of its ends when it has no turning point; on an
   // inextensible beam with turning points, the ends bound it too where the first integral forbids
   // theta = +-pi/2 (beam_first_integral_bars_level): then the beam stays strictly between.
@@ -965,13 +1010,13 @@ inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const 
     const T lo2 = beta < half_pi ? beta : half_pi, hi2 = beta < half_pi ? half_pi : beta;
     if (lo1 >= -half_pi && hi1 <= half_pi && lo2 >= -half_pi && hi2 <= half_pi) {
       // T's range from T and T' at the ends (the ranges are shorter than pi): axial_force_range.
-      T t_min = 0, t_max = 0;  // over the extensible segments, scaled by their 1/EA
-      auto add_range = [&](T c, T lo, T hi) {
-        if (c * lo < t_min) t_min = c * lo;
-        if (c * hi > t_max) t_max = c * hi;
-      };
+      strain_extremes<T> e;  // T/EA over the segments
+      auto add_range = [&](T c, T lo, T hi) { e.add(c, lo, hi); };
       auto seg_range = [&](T c, T th_a, T sa, T ca, T th_b, T sb, T cb) {
-        if (!(c > 0)) return;
+        if (!(c > 0)) {
+          e.add(c, T(0), T(0));
+          return;
+        }
         if (th_b < th_a) {
           std::swap(sa, sb);
           std::swap(ca, cb);
@@ -987,24 +1032,26 @@ inline admissibility_result<T> admissibility_imp(const seta_params<T>& d, const 
       }
       T lo_s = 0, hi_s = 0;  // T's range on a turning spatula
       if (f.n2 > 0 && !spatula_first_integral_bars_level(d, st, f, N, sb, cb, lo_s, hi_s))
-        return admissibility_general(d, st, f, strain_limit);
+        return admissibility_general(d, st, f, strain_limit, strain_only);
       if (d.c1 > 0) {
         const T sj = sb * d.co2 - cb * d.s2, cj = cb * d.co2 + sb * d.s2;
         seg_range(d.c1, d.alpha1, d.s1, d.co1, th_j1, sj, cj);
+      } else {
+        e.add(d.c1, T(0), T(0));
       }
       if (f.n2 == 0) seg_range(d.c2, beta, sb, cb, half_pi, T(1), T(0));
-      else if (d.c2 > 0) add_range(d.c2, lo_s, hi_s);
+      else add_range(d.c2, lo_s, hi_s);
       // z decreases along s only while the stretch 1 + T/EA is positive (tension, T > 0, never
       // stops it; a compression of EA or more would).
-      if (t_min > -1) {
+      if (e.lo > -1) {
         r.min_z = 0;
         r.where = f.a_edge;
         r.exact_fast_path = true;
-        return finish(t_max > -t_min ? t_max : -t_min);
+        return finish(e);
       }
     }
   }
-  return admissibility_general(d, st, f, strain_limit);
+  return admissibility_general(d, st, f, strain_limit, strain_only);
 }
 
 }  // namespace detail

@@ -21,8 +21,8 @@
 // the beam's zero-length jump at theta1(l1) = alpha1, and the edge of a stretch without beam
 // states. Both lengths are the closed-form Carlson forms of gecko/seta/elastica_segment.hpp
 // (turning points included); nothing is integrated. Each equilibrium is then checked for
-// admissibility (gecko/seta/admissibility.hpp: the seta above the substrate before the edge, an
-// optional strain limit).
+// admissibility (gecko/seta/admissibility.hpp: the seta above the substrate before the edge, a
+// positive stretch 1 + T/EA everywhere, an optional strain limit).
 //
 // Where no equilibrium has 0 < t <= l2, G has one sign at both ends and says where the equilibrium
 // went: beyond t = l2 (the seta would need a longer spatula: a load below the critical line, where
@@ -62,8 +62,9 @@ enum class contact_status : int {
   several_equilibria = 6,  // more than one admissible equilibrium with l1 < a <= l1 + l2 (see
                            // `equilibria`; contact_equilibria returns all of them)
   inadmissible = 7         // equilibria exist, but none is admissible: the seta crosses the substrate
-                           // before the edge (joint or beam below z = 0) or exceeds the strain limit;
-                           // the (first) state's values are kept for drawing
+                           // before the edge (joint or beam below z = 0), a segment is compressed to
+                           // zero length (min_stretch <= 0), or it exceeds the strain limit; the
+                           // (first) state's values are kept for drawing
 };
 
 template <class T>
@@ -79,6 +80,7 @@ struct contact_result {
   int turning_points_beam = -1;
   int turning_points_spatula = -1;
   T max_axial_strain = std::numeric_limits<T>::quiet_NaN();  // max |T(theta)|/EA over 0 <= s <= a
+  T min_stretch = std::numeric_limits<T>::quiet_NaN();       // min 1 + T/EA over 0 <= s <= a (<= 0: status 7)
   // Left side of eq (3) at the edge, 1/2 EI2 theta2'(a)^2 + T(pi/2)^2/(2 EA2), from the solved
   // spatula state: equal to w at every equilibrium (it is the condition that fixes a).
   T energy_release_rate = std::numeric_limits<T>::quiet_NaN();
@@ -608,6 +610,7 @@ inline contact_status contact_solve(const seta_params<T>& d, T Fn, T Ft, const c
     r.theta_rate_base = k1;
     r.turning_points = r.turning_points_beam = r.turning_points_spatula = 0;
     r.max_axial_strain = 0;
+    r.min_stretch = 1;
     r.min_z = 0;  // theta rises monotonically from alpha1 to pi/2: z falls to the edge
     r.energy_release_rate = d.w;
     r.equilibria = 1;
@@ -934,13 +937,14 @@ inline contact_status contact_solve(const seta_params<T>& d, T Fn, T Ft, const c
     // Eq (3), left side: 1/2 EI2 theta2'(a)^2 = R2(pi/2) (eq 12), T(pi/2) = N cos(phi) = Ft.
     r.energy_release_rate = fp.R2(half_pi) + d.c2 * Ft * Ft / 2;
     // Admissibility (gecko/seta/admissibility.hpp): the seta must stay on its side of the
-    // substrate before the edge (and within the caller's strain limit); else status 7, with the
-    // state's values kept for drawing.
+    // substrate before the edge, with a positive stretch (and within the caller's strain limit);
+    // else status 7, with the state's values kept for drawing.
     seta_pose<T> pose{Fn, Ft, r.theta_joint, r.theta_rate_base, r.theta_rate_joint, r.turning_points_beam,
                       r.turning_points_spatula, r.a - d.l1};
     const auto adm = admissibility_imp(d, pose, opt.strain_limit);
     r.min_z = adm.min_z;
     if (adm.max_axial_strain == adm.max_axial_strain) r.max_axial_strain = adm.max_axial_strain;
+    r.min_stretch = adm.min_stretch;
     r.status = adm.admissible ? contact_status::converged : contact_status::inadmissible;
     eq[n_eq++] = r;
   }

@@ -129,7 +129,9 @@ inline void critical_line_at_imp(const TwoLevelSeta<T>& s, const T* Ft, std::siz
 // natural state's march in lambda (natural_state.hpp). Only a converged or inadmissible answer
 // replaces the double one; where double gave up with status 1, also an unsupported one (status 3)
 // or a line given up before the target (status 6); and a line that turned back before the target
-// (status 2, beyond the line): any other status of the retry leaves the give-up as it was. States
+// (status 2, beyond the line); where double's line was given up (status 6), also a line that
+// leaves the model before the target (status 3): any other status of the retry leaves the give-up
+// as it was. States
 // solved in double are not touched.
 template <class Policy, bool E1, bool E2>
 inline void retry_in_long_double(const TwoLevelSeta<double>& s, const double* Ft, std::size_t count,
@@ -171,9 +173,14 @@ inline void retry_in_long_double(const TwoLevelSeta<double>& s, const double* Ft
     // was given up on the way, not "Newton did not converge" (design 7775 of the 10,000-design
     // re-run, whose other Ft the retry solves, was such a state until the march in arclength
     // claimed the targets past a turned-back fold: it is status 2 now, below).
-    const bool retry_found_edge_or_line = (r.status == critical_status::unsupported_state ||
-                                           r.status == critical_status::not_reached) &&
-                                          o.status == critical_status::not_converged;
+    // Where double's line was given up before this Ft (status 6), the retry's line may leave the
+    // model before it (a state compressed to zero length, line_trace.hpp's end_at_inverted_state,
+    // or the edge of the forms): status 3, as where double's own line leaves it.
+    const bool retry_found_edge_or_line = ((r.status == critical_status::unsupported_state ||
+                                            r.status == critical_status::not_reached) &&
+                                           o.status == critical_status::not_converged) ||
+                                          (r.status == critical_status::unsupported_state &&
+                                           o.status == critical_status::not_reached);
     // The retry's line turned back short of this Ft after a fold (its separatrix march in
     // arclength came back over Ft = 0, separatrix_arclength.hpp): no critical state on the line,
     // as where double's own line turns back.
@@ -195,6 +202,7 @@ inline void retry_in_long_double(const TwoLevelSeta<double>& s, const double* Ft
     o.min_z = double(r.min_z);
     o.min_z_at = double(r.min_z_at);
     o.max_axial_strain = double(r.max_axial_strain);
+    o.min_stretch = double(r.min_stretch);
   }
 }
 

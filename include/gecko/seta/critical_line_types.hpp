@@ -44,13 +44,15 @@ struct critical_line_point {
   // converged: re-solved to critical_line_options::tolerance (or the natural state, or the
   // landed end of the line). not_converged: the node could not be re-solved; its values are the
   // continuation's, accurate to about line_tolerance only, and kept so the line can be drawn.
-  // inadmissible: a re-solved node where the seta crosses the substrate (or exceeds the strain
-  // limit); its values are kept so the line can be drawn.
+  // inadmissible: a re-solved node where the seta crosses the substrate, a segment is compressed
+  // to zero length (min_stretch <= 0) or the strain limit is exceeded; its values are kept so the
+  // line can be drawn.
   critical_status status;
   // Admissibility of converged and inadmissible nodes (see critical_state); NaN otherwise.
   T min_z = std::numeric_limits<T>::quiet_NaN();
   T min_z_at = std::numeric_limits<T>::quiet_NaN();
   T max_axial_strain = std::numeric_limits<T>::quiet_NaN();
+  T min_stretch = std::numeric_limits<T>::quiet_NaN();
 };
 
 template <class T>

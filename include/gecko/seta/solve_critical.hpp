@@ -29,13 +29,15 @@ namespace gecko {
 // admissible (gecko/seta/admissibility.hpp); everything else comes with NaN in Fn and theta_joint,
 // except inadmissible (7), which keeps the solved Fn, theta_joint, rates, turning points, min_z and
 // max_axial_strain so that the state can be drawn and inspected: it solves paper 001 eq (15) but
-// the seta crosses the substrate there (or exceeds the caller's strain limit), so it is no state
-// of a real seta.
+// the seta crosses the substrate there, or a segment is compressed to zero length or beyond
+// (min_stretch <= 0), or it exceeds the caller's strain limit, so it is no state of a real seta.
 enum class critical_status : int {
   converged = 0,
   not_converged = 1,      // Newton did not converge from the guess it was given
   no_critical_state = 2,  // the critical line followed from Ft = 0 does not reach this Ft (states off it may exist)
-  unsupported_state = 3,  // the state leaves the model's forms (axial load comparable to EA)
+  unsupported_state = 3,  // the state leaves the model (axial load comparable to EA): past the edge of
+                          // the forms, or on a followed line past its first state compressed to zero
+                          // length (a stretch 1 + T/EA <= 0, gecko/seta/detail/line_trace.hpp)
   singular = 4,           // singular Jacobian: Ft at a fold of the line (use the line instead)
   invalid_input = 5,      // bad input under nan_policy
   not_reached = 6,        // the line followed from Ft = 0 stopped before this Ft without ending
@@ -60,10 +62,12 @@ struct critical_state {
   // Admissibility (gecko/seta/admissibility.hpp), for converged and inadmissible states: the
   // lowest height of the seta above the substrate over [0, a] (0: the contact edge is the lowest
   // point; negative: it crosses the substrate), the arc length s where it is, and the largest
-  // axial strain |T|/EA along the seta. NaN where no state was solved (or the check failed).
+  // axial strain |T|/EA along the seta, and its lowest stretch 1 + T/EA (<= 0: inadmissible). NaN
+  // where no state was solved (or the check failed).
   T min_z = std::numeric_limits<T>::quiet_NaN();
   T min_z_at = std::numeric_limits<T>::quiet_NaN();
   T max_axial_strain = std::numeric_limits<T>::quiet_NaN();
+  T min_stretch = std::numeric_limits<T>::quiet_NaN();
 };
 
 // The admissibility check of a solved state (status converged or inadmissible).
@@ -124,8 +128,9 @@ inline critical_status solve_with_plans(const System& sys, typename System::vec&
   return critical_status::not_converged;
 }
 
-// Admissibility of a converged state: sets min_z, min_z_at, max_axial_strain, and status 7 where
-// the seta crosses the substrate or exceeds the strain limit (or the check could not be made).
+// Admissibility of a converged state: sets min_z, min_z_at, max_axial_strain, min_stretch, and
+// status 7 where the seta crosses the substrate, is compressed to zero length somewhere, or exceeds
+// the strain limit (or the check could not be made).
 template <class System, class T>
 inline void apply_admissibility(const System&, critical_state<T>&) {}
 
@@ -137,6 +142,7 @@ inline void apply_admissibility(const seta_system<T, Policy, E1, E2>& sys, criti
   r.min_z = a.min_z;
   r.min_z_at = a.where;
   r.max_axial_strain = a.max_axial_strain;
+  r.min_stretch = a.min_stretch;
   if (!a.admissible) r.status = critical_status::inadmissible;
 }
 

@@ -29,7 +29,8 @@ enum class line_end : int {
   reached_ft_max = 1,     // reached (Ft)max = sqrt(2 EA2 w), where the critical line ends
   turned_back = 2,        // after a fold the line came back below its starting Ft
   no_convergence = 3,     // the corrector failed even with the smallest step (singular point)
-  unsupported_state = 4,  // the states left the model's forms (axial load comparable to EA)
+  unsupported_state = 4,  // the states left the model (axial load comparable to EA): the edge of the
+                          // forms, or for the critical line a state compressed to zero length
   max_points = 5,         // the point budget ran out
   no_natural_state = 6,   // the natural state at Ft = 0 was not found
   stalled = 7             // the step collapsed: the line crawls (see continuation_options)

@@ -7,7 +7,9 @@
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
+#include "gecko/seta/admissibility.hpp"
 #include "gecko/seta/critical_line_types.hpp"
 #include "gecko/seta/detail/continuation.hpp"
 #include "gecko/seta/detail/natural_state.hpp"
@@ -49,6 +51,7 @@ inline critical_line_point<T> line_point(const System& sys, const line_node<T, S
     p.min_z = st.min_z;
     p.min_z_at = st.min_z_at;
     p.max_axial_strain = st.max_axial_strain;
+    p.min_stretch = st.min_stretch;
   }
   return p;
 }
@@ -83,6 +86,44 @@ inline bool start_line(const System& sys, typename System::vec& z0, typename Sys
   return true;
 }
 
+// The followed line ends at its first node where a segment is compressed to zero length or beyond
+// (a stretch 1 + T/EA <= 0 somewhere, T <= -EA: admissibility_imp's `inverted`). The equations of
+// the extensible elastica go on solving there, but their linear law then maps a piece of the rod to
+// a negative length, which no seta can take, and the edge of the forms (f4's root, where the
+// solver's plans end: line_end::unsupported_state) lies further on (gecko/seta/admissibility.hpp,
+// "Strain"). So the line leaves the model at that node, as a line that runs into the edge of the
+// forms does: the node is kept (states read off the line up to it are solved and judged on their
+// own, status 7 where inverted), the line ends unsupported_state, and the targets beyond it are
+// status 3. Lines of the campaign's extensible beams compressed tens of times EA ran on along the
+// edge of the forms until their step collapsed (validation/README.md, "Lines that run along the
+// edge of the forms"). Cost: a comparison per node where c N < 1 (the stretch is then at least
+// 1 - c N > 0), else the strain part of the admissibility check, without its quadrature.
+template <class System>
+inline void end_at_inverted_state(const System&, traced_line<System>&) {}
+
+template <class T, class Policy, bool E1, bool E2>
+inline void end_at_inverted_state(const seta_system<T, Policy, E1, E2>& sys,
+                                  traced_line<seta_system<T, Policy, E1, E2>>& line) {
+  using std::sqrt;
+  const T c = sys.d.c1 > sys.d.c2 ? sys.d.c1 : sys.d.c2;
+  if (!(c > 0)) return;
+  for (std::size_t k = 0; k < line.nodes.size(); ++k) {
+    const auto& node = line.nodes[k];
+    const T Fn = node.z[0], Ft = sys.ft_of(node.Ft);
+    if (!(c * sqrt(Fn * Fn + Ft * Ft) >= 1)) continue;
+    seta_pose<T> pose{Fn, Ft, sys.theta_joint(node.z), sys.rate_base(node.z), sys.rate_joint(node.z), 0, 0,
+                      std::numeric_limits<T>::quiet_NaN()};
+    sys.turning_points(line.plans[k], node.z, node.Ft, pose.turning_points_beam, pose.turning_points_spatula);
+    if (!admissibility_imp(sys.d, pose, std::numeric_limits<T>::infinity(), true).inverted) continue;
+    line.nodes.resize(k + 1);
+    line.plans.resize(k + 1);
+    if (line.jacobians.size() > k + 1) line.jacobians.resize(k + 1);
+    if (line.folds.size() > static_cast<std::size_t>(node.branch)) line.folds.resize(node.branch);
+    line.end = line_end::unsupported_state;
+    return;
+  }
+}
+
 // The line followed from the natural state (z0, plan0) in one direction, up to Ft = ft_stop.
 // outputs: how many states will be read off the line; many outputs make denser nodes pay (better
 // Hermite guesses, fewer chord steps per output).
@@ -107,6 +148,7 @@ inline void follow_from_natural(const System& sys, T ft_stop, T scale, const cri
   const T per_output = T(30) / static_cast<T>(outputs > 0 ? outputs : 1);
   copt.max_step = per_output < T(0.01) ? T(0.01) : (per_output > T(0.08) ? T(0.08) : per_output);
   line = follow_line(sys, z0, T(0), plan0, ft_stop > 0 ? 1 : -1, copt);
+  end_at_inverted_state(sys, line);
 }
 
 // Natural state + the followed line in one direction, up to Ft = ft_stop (false, with line.end

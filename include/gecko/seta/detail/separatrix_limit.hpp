@@ -519,9 +519,10 @@ inline bool separatrix_target_state(const separatrix_system<T, Policy, E1, E2>& 
     r.turning_points_beam = turning[0];
     r.turning_points_spatula = turning[1];
     apply_admissibility(sys, r);
-    // A state whose admissibility could not be decided stays unknown.
+    // A state whose admissibility could not be decided stays unknown (a strain beyond the limit or
+    // a stretch <= 0 decides it without the height).
     if (r.status == critical_status::inadmissible && !(r.min_z == r.min_z) &&
-        !(r.max_axial_strain > sys.strain_limit))
+        !(r.max_axial_strain > sys.strain_limit) && !(r.min_stretch <= 0))
       return false;
     return true;
   }
