@@ -28,8 +28,8 @@ quadrature did not close; 5 of the 60,000 states of the project's stress campaig
 confirmed admissible, and not known to cross either.
 
 Every solved state reports ``min_z`` (its lowest height above the substrate over the seta, 0 when
-the contact edge is the lowest point), ``min_z_at`` (the arc length s of that point) and
-``max_axial_strain`` (the largest |T|/EA along the seta) and ``min_stretch`` (the lowest
+the contact edge is the lowest point), ``min_z_at`` (the arc length s of that point),
+``max_axial_strain`` (the largest |T|/EA along the seta) and ``min_stretch`` (the lowest stretch
 1 + T/EA along it).
 
 Bad input raises ``ValueError`` naming the parameter and its allowed range (or, with

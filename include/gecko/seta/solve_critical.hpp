@@ -27,10 +27,11 @@ namespace gecko {
 
 // What happened to one critical-state solve. 0 means a verified solution that is physically
 // admissible (gecko/seta/admissibility.hpp); everything else comes with NaN in Fn and theta_joint,
-// except inadmissible (7), which keeps the solved Fn, theta_joint, rates, turning points, min_z and
-// max_axial_strain so that the state can be drawn and inspected: it solves paper 001 eq (15) but
-// the seta crosses the substrate there, or a segment is compressed to zero length or beyond
-// (min_stretch <= 0), or it exceeds the caller's strain limit, so it is no state of a real seta.
+// except inadmissible (7), which keeps the solved Fn, theta_joint, rates, turning points, min_z,
+// max_axial_strain and min_stretch so that the state can be drawn and inspected: it solves paper
+// 001 eq (15) but the seta crosses the substrate there, or a segment is compressed to zero length
+// or beyond (min_stretch <= 0), or it exceeds the caller's strain limit, so it is no state of a
+// real seta.
 enum class critical_status : int {
   converged = 0,
   not_converged = 1,      // Newton did not converge from the guess it was given
