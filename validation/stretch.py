@@ -26,9 +26,11 @@ parabola through the lowest sample and its neighbours). Of the two signs of the 
 whose joint angle meets gecko's beta is kept; the shot's own closing error, |theta1(0) - alpha1|,
 is reported (``base_miss``). A segment end with a stretch <= 0 decides a state from its boundary
 values alone (``lowest_end_stretch``); otherwise the shot decides where it misses the base by at most
-1e-2 rad and its lowest stretch lies farther from 0 than max(1e-8, c N x base_miss), else the
-state is ``undecided`` (``stretch_verdict``). A status-7 state is re-solved as the campaign solves
-it, with all the design's Ft in one call.
+1e-6 rad and its lowest stretch lies farther from 0 than max(1e-8, c N x base_miss). Where it does
+not, the same ODE shot forwards from the base with the state's own theta1'(0) decides the same way,
+with its miss at the contact edge (``shot_min_stretch_from_base``); else the state is ``undecided``
+(``stretch_verdict``). A status-7 state is re-solved as the campaign solves it, with all the
+design's Ft in one call.
 
     PYTHONPATH=<gecko>:. python3 -m validation.stretch validation/rerun_base.npz validation/rerun_main.npz \\
         [--json F.json]
@@ -46,7 +48,7 @@ from . import campaign
 from .line_ends import end_stretch
 
 SAMPLES = 4000     # dense-output samples per segment
-MISS_LIMIT = 1e-2  # largest |theta1(0) - alpha1| of a shot that decides (rad)
+MISS_LIMIT = 1e-6  # largest closing error of a shot that decides (rad)
 DECIDE = 1e-8      # a lowest stretch within this of 0 decides nothing
 
 
@@ -67,34 +69,42 @@ def _segment_min_stretch(sol, s0, s1, c, Fn, Ft):
     return lo
 
 
+def _compliances(p):
+    EA1, EA2 = float(p[2]), float(p[3])
+    return (0.0 if math.isinf(EA1) else 1.0 / EA1), (0.0 if math.isinf(EA2) else 1.0 / EA2)
+
+
+def _rhs(Fn, Ft, EI, c):
+    """theta'' of paper 001 eqs (1)-(2) on one segment, as a first-order system in (theta, theta')."""
+    def f(_s, y):
+        th, om = y
+        T = Ft * math.sin(th) - Fn * math.cos(th)
+        return [om, -(Fn * math.sin(th) + Ft * math.cos(th)) * (1 + c * T) / EI]
+    return f
+
+
+def _run(Fn, Ft, EI, c, s0, s1, y0):
+    return solve_ivp(_rhs(Fn, Ft, EI, c), (s0, s1), y0, method="DOP853", rtol=1e-12, atol=1e-12,
+                     dense_output=True)
+
+
 def shot_min_stretch(p, Fn, Ft, beta):
     """(lowest stretch over the seta, the shot's |theta1(0) - alpha1|) for the design p (campaign
-    FIELDS order) at the forces (Fn, Ft); beta picks the sign of the edge rate."""
-    EI1, EI2, EA1, EA2, l1, l2, a1, a2, w = (float(x) for x in p)
-    c1 = 0.0 if math.isinf(EA1) else 1.0 / EA1
-    c2 = 0.0 if math.isinf(EA2) else 1.0 / EA2
+    FIELDS order) at the forces (Fn, Ft), shot back from the contact edge; beta picks the sign of
+    the edge rate."""
+    EI1, EI2, _, _, l1, l2, a1, a2, w = (float(x) for x in p)
+    c1, c2 = _compliances(p)
     radicand = 2 * (w - c2 * Ft * Ft / 2) / EI2
     if not radicand >= 0:
         return math.nan, math.inf
-
-    def rhs(EI, c):
-        def f(_s, y):
-            th, om = y
-            T = Ft * math.sin(th) - Fn * math.cos(th)
-            return [om, -(Fn * math.sin(th) + Ft * math.cos(th)) * (1 + c * T) / EI]
-        return f
-
     best = (math.nan, math.inf, math.inf)  # (min stretch, joint miss, base miss)
     for sign in (1.0, -1.0):
-        y0 = [math.pi / 2, sign * math.sqrt(radicand)]
-        sp = solve_ivp(rhs(EI2, c2), (l1 + l2, l1), y0, method="DOP853", rtol=1e-12, atol=1e-12,
-                       dense_output=True)
+        sp = _run(Fn, Ft, EI2, c2, l1 + l2, l1, [math.pi / 2, sign * math.sqrt(radicand)])
         if not sp.success:
             continue
         thj, omj = sp.y[0, -1], sp.y[1, -1]
         joint_miss = abs(thj - beta)
-        sb = solve_ivp(rhs(EI1, c1), (l1, 0.0), [thj - a2, omj * EI2 / EI1], method="DOP853",
-                       rtol=1e-12, atol=1e-12, dense_output=True)
+        sb = _run(Fn, Ft, EI1, c1, l1, 0.0, [thj - a2, omj * EI2 / EI1])
         if not sb.success:
             continue
         lo = min(_segment_min_stretch(sp, l1 + l2, l1, c2, Fn, Ft),
@@ -104,6 +114,22 @@ def shot_min_stretch(p, Fn, Ft, beta):
     return best[0], best[2]
 
 
+def shot_min_stretch_from_base(p, Fn, Ft, rate_base):
+    """(lowest stretch, the shot's |theta2(a) - pi/2|): the same ODE shot forwards from the base
+    with the state's own theta1'(0), for states whose shot from the edge does not close (a beam
+    compressed far past EA1 is a libration about its compressed orientation, stable forwards)."""
+    EI1, EI2, _, _, l1, l2, a1, a2, _ = (float(x) for x in p)
+    c1, c2 = _compliances(p)
+    sb = _run(Fn, Ft, EI1, c1, 0.0, l1, [a1, float(rate_base)])
+    if not sb.success:
+        return math.nan, math.inf
+    sp = _run(Fn, Ft, EI2, c2, l1, l1 + l2, [sb.y[0, -1] + a2, sb.y[1, -1] * EI1 / EI2])
+    if not sp.success:
+        return math.nan, math.inf
+    lo = min(_segment_min_stretch(sb, 0.0, l1, c1, Fn, Ft), _segment_min_stretch(sp, l1, l1 + l2, c2, Fn, Ft))
+    return lo, abs(sp.y[0, -1] - math.pi / 2)
+
+
 def lowest_end_stretch(p, Fn, Ft, beta):
     """The lowest stretch 1 + c T at the four segment ends (line_ends.end_stretch: base, the joint
     on either side, contact edge) from the forces and the angles alone."""
@@ -111,28 +137,37 @@ def lowest_end_stretch(p, Fn, Ft, beta):
     return float(end_stretch(np.asarray(p, dtype=float)[None, :], one(Ft), one(Fn), one(beta))[0, 0])
 
 
-def stretch_verdict(p, Fn, Ft, beta):
+def stretch_verdict(p, Fn, Ft, beta, rate_base=None):
     """Is the state's lowest stretch <= 0 ("nonpositive"), > 0 ("positive"), or not decided?
 
-    An end with a stretch <= 0 decides it from the boundary values alone. Otherwise the shot does,
-    where its own base miss is at most 1e-2 rad and its lowest stretch lies farther from 0 than
-    max(1e-8, c N x miss), c N x miss bounding the stretch's change for an angle that far off
-    (d(1 + c T)/dtheta = c N cos(theta - phi))."""
+    An end with a stretch <= 0 decides it from the boundary values alone. Otherwise the shot from
+    the edge does, where its own base miss is at most 1e-6 rad and its lowest stretch lies farther
+    from 0 than max(1e-8, c N x miss), c N x miss bounding the stretch's change for an angle that
+    far off (d(1 + c T)/dtheta = c N cos(theta - phi)). Where that shot does not decide and the
+    state's theta1'(0) is given, the shot from the base decides the same way with its miss at the
+    contact edge (``by`` says which)."""
     end = lowest_end_stretch(p, Fn, Ft, beta)
     row = {"lowest_end_stretch": end}
     if end <= 0:
         row["stretch"] = "nonpositive"
         row["by"] = "segment_end"
         return row
+    c = max(_compliances(p))
+
+    def decide(lo, miss):
+        margin = max(DECIDE, c * math.hypot(Fn, Ft) * miss)
+        if not (miss <= MISS_LIMIT and math.isfinite(lo)) or abs(lo) <= margin:
+            return "undecided"
+        return "nonpositive" if lo < 0 else "positive"
     lo, miss = shot_min_stretch(p, Fn, Ft, beta)
-    EA1, EA2 = float(p[2]), float(p[3])
-    c = max(0.0 if math.isinf(EA1) else 1.0 / EA1, 0.0 if math.isinf(EA2) else 1.0 / EA2)
-    margin = max(DECIDE, c * math.hypot(Fn, Ft) * miss)
     row.update({"shot_min_stretch": lo, "base_miss": miss, "by": "shot"})
-    if not (miss <= MISS_LIMIT and math.isfinite(lo)) or abs(lo) <= margin:
-        row["stretch"] = "undecided"
-    else:
-        row["stretch"] = "nonpositive" if lo < 0 else "positive"
+    row["stretch"] = decide(lo, miss)
+    if row["stretch"] == "undecided" and rate_base is not None:
+        lo_b, miss_b = shot_min_stretch_from_base(p, Fn, Ft, rate_base)
+        row.update({"base_shot_min_stretch": lo_b, "edge_miss": miss_b})
+        row["stretch"] = decide(lo_b, miss_b)
+        if row["stretch"] != "undecided":
+            row["by"] = "shot_from_base"
     return row
 
 
@@ -147,7 +182,7 @@ def check_inverted_state(p, fts, j):
     st = _seta(p).critical_line(Ft=[float(x) for x in fts])
     Fn, beta, gecko_min = float(st.Fn[j]), float(st.theta_joint[j]), float(st.min_stretch[j])
     row = {"gecko_min_stretch": gecko_min, "status": int(st.status[j])}
-    row.update(stretch_verdict(p, Fn, float(fts[j]), beta))
+    row.update(stretch_verdict(p, Fn, float(fts[j]), beta, float(st.theta_rate_base[j])))
     if row["stretch"] == "undecided":
         row["verdict"] = "undecided"
     else:
@@ -167,7 +202,8 @@ def check_beyond_line(p, Ft):
         return row
     nodes = []
     for k in ([-2, -1] if len(line.Ft) >= 2 else [-1]):
-        v = stretch_verdict(p, float(line.Fn[k]), float(line.Ft[k]), float(line.theta_joint[k]))
+        v = stretch_verdict(p, float(line.Fn[k]), float(line.Ft[k]), float(line.theta_joint[k]),
+                            float(line.theta_rate_base[k]))
         v.update({"Ft": float(line.Ft[k]), "gecko_min_stretch": float(line.min_stretch[k])})
         nodes.append(v)
     row["last"] = nodes[-1]
