@@ -61,6 +61,21 @@ def sample_designs(n, rng, p_inf=0.2):
     return np.column_stack([EI1, EI2, EA1, EA2, np.ones(n), l2, a1, a2, np.ones(n)])
 
 
+def seta(p):
+    """The gecko.TwoLevelSeta of one design row p (FIELDS order)."""
+    import gecko
+    return gecko.TwoLevelSeta(**dict(zip(FIELDS, (float(x) for x in p))))
+
+
+def compliances(P):
+    """c = 1 / EA of each design's beam and spatula (0 for EA = inf), as columns (one row for a
+    single design p)."""
+    P = np.atleast_2d(P)
+    EA1, EA2 = P[:, 2:3], P[:, 3:4]
+    with np.errstate(divide="ignore"):
+        return np.where(np.isinf(EA1), 0.0, 1.0 / EA1), np.where(np.isinf(EA2), 0.0, 1.0 / EA2)
+
+
 def ft_scale(P):
     EI1, EA2, l1, w = P[:, 0], P[:, 3], P[:, 4], P[:, 8]
     return np.where(np.isfinite(EA2), np.sqrt(2 * EA2 * w), 3 * np.sqrt(EI1 * w) / l1)
@@ -74,14 +89,12 @@ def sample_ft(P, rng):
 
 # ----------------------------------------------------------------------------------- worker
 def _worker(conn):
-    import gecko
     while True:
         msg = conn.recv()
         if msg is None:
             return
         p, ft = msg
-        s = gecko.TwoLevelSeta(**dict(zip(FIELDS, p)))
-        L = s.critical_line(Ft=np.asarray(ft), errors="nan")
+        L = seta(p).critical_line(Ft=np.asarray(ft), errors="nan")
         conn.send((L.Fn, L.theta_joint, L.status, L.turning_points_beam, L.turning_points_spatula,
                    L.iterations))
 

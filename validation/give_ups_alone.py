@@ -26,14 +26,12 @@ from . import campaign
 
 
 def run(path: str) -> dict:
-    import gecko
     t0 = time.time()
     z = np.load(path)
     P, FT, status = z["P"], z["FT"], z["status"]
     rows = []
     for i, j in np.argwhere(status == 6):
-        s = gecko.TwoLevelSeta(**dict(zip(campaign.FIELDS, (float(x) for x in P[i]))))
-        r = s.critical_line(Ft=[float(FT[i, j])])
+        r = campaign.seta(P[i]).critical_line(Ft=[float(FT[i, j])])
         same_side = FT[i][np.sign(FT[i]) == np.sign(FT[i, j])]  # the targets of the same line
         rows.append({"design": int(i), "Ft": float(FT[i, j]), "alone_status": int(r.status[0]),
                      "alone_Fn": float(r.Fn[0]),

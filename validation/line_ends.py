@@ -62,7 +62,7 @@ import time
 
 import numpy as np
 
-from .campaign import FIELDS
+from .campaign import FIELDS, compliances
 from .recheck import STATES
 
 GIVEN_UP = ("no_convergence", "stalled", "max_points")
@@ -180,13 +180,6 @@ def lengths(npz: str) -> dict:
         out["forms_edge_solved"] = forms_edge_solved(P, FT, z["Fn"], z["beta"], ST)
         out["end_stretch_solved"] = end_stretch_solved(P, FT, z["Fn"], z["beta"], ST)
     return out
-
-
-def compliances(P):
-    """c = 1 / EA of each design's beam and spatula (0 for EA = inf), as columns."""
-    EA1, EA2 = P[:, 2:3], P[:, 3:4]
-    with np.errstate(divide="ignore"):
-        return np.where(np.isinf(EA1), 0.0, 1.0 / EA1), np.where(np.isinf(EA2), 0.0, 1.0 / EA2)
 
 
 def end_stretch(P, FT, Fn, beta):

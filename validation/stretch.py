@@ -69,11 +69,6 @@ def _segment_min_stretch(sol, s0, s1, c, Fn, Ft):
     return lo
 
 
-def _compliances(p):
-    EA1, EA2 = float(p[2]), float(p[3])
-    return (0.0 if math.isinf(EA1) else 1.0 / EA1), (0.0 if math.isinf(EA2) else 1.0 / EA2)
-
-
 def _rhs(Fn, Ft, EI, c):
     """theta'' of paper 001 eqs (1)-(2) on one segment, as a first-order system in (theta, theta')."""
     def f(_s, y):
@@ -93,7 +88,7 @@ def shot_min_stretch(p, Fn, Ft, beta):
     FIELDS order) at the forces (Fn, Ft), shot back from the contact edge; beta picks the sign of
     the edge rate."""
     EI1, EI2, _, _, l1, l2, a1, a2, w = (float(x) for x in p)
-    c1, c2 = _compliances(p)
+    c1, c2 = (c.item() for c in campaign.compliances(p))
     radicand = 2 * (w - c2 * Ft * Ft / 2) / EI2
     if not radicand >= 0:
         return math.nan, math.inf
@@ -119,7 +114,7 @@ def shot_min_stretch_from_base(p, Fn, Ft, rate_base):
     with the state's own theta1'(0), for states whose shot from the edge does not close (a beam
     compressed far past EA1 is a libration about its compressed orientation, stable forwards)."""
     EI1, EI2, _, _, l1, l2, a1, a2, _ = (float(x) for x in p)
-    c1, c2 = _compliances(p)
+    c1, c2 = (c.item() for c in campaign.compliances(p))
     sb = _run(Fn, Ft, EI1, c1, 0.0, l1, [a1, float(rate_base)])
     if not sb.success:
         return math.nan, math.inf
@@ -152,7 +147,7 @@ def stretch_verdict(p, Fn, Ft, beta, rate_base=None):
         row["stretch"] = "nonpositive"
         row["by"] = "segment_end"
         return row
-    c = max(_compliances(p))
+    c = max(c.item() for c in campaign.compliances(p))
 
     def decide(lo, miss):
         margin = max(DECIDE, c * math.hypot(Fn, Ft) * miss)
@@ -171,15 +166,10 @@ def stretch_verdict(p, Fn, Ft, beta, rate_base=None):
     return row
 
 
-def _seta(p):
-    import gecko
-    return gecko.TwoLevelSeta(**dict(zip(campaign.FIELDS, (float(x) for x in p))))
-
-
 def check_inverted_state(p, fts, j):
     """A state that became status 7 (the j-th of the design's campaign Ft fts, solved in one
     call as the campaign does): is it compressed to zero length?"""
-    st = _seta(p).critical_line(Ft=[float(x) for x in fts])
+    st = campaign.seta(p).critical_line(Ft=[float(x) for x in fts])
     Fn, beta, gecko_min = float(st.Fn[j]), float(st.theta_joint[j]), float(st.min_stretch[j])
     row = {"gecko_min_stretch": gecko_min, "status": int(st.status[j])}
     row.update(stretch_verdict(p, Fn, float(fts[j]), beta, float(st.theta_rate_base[j])))
@@ -195,7 +185,7 @@ def check_beyond_line(p, Ft):
     """A state that became status 3: does the line end at its first node compressed to zero
     length, short of this Ft?"""
     import gecko
-    line = _seta(p).critical_line(ft_end=float(Ft))
+    line = campaign.seta(p).critical_line(ft_end=float(Ft))
     row = {"end": int(line.end_code), "nodes": len(line.Ft)}
     if line.end_code != gecko.LineEnd.unsupported_state:
         row["verdict"] = "line_does_not_leave_the_model"

@@ -590,10 +590,10 @@ def test_stretch_check_of_a_line_that_leaves_the_model():
     # towards Ft = -726.36 (tests/seta/admissibility.cpp), the last node is compressed to zero
     # length and the node before it is not, and the target lies beyond the line.
     pytest.importorskip("scipy")
-    from validation import stretch
+    from validation import campaign, stretch
     p = [9.234011903410433, 8632.183289992317, 1898.1613549209487, 335194.8826055024, 1.0,
          0.08155494130194677, 1.474315464438074, 0.028604678886875907, 1.0]
-    line = stretch._seta(p).critical_line(ft_end=-726.3553702242612)
+    line = campaign.seta(p).critical_line(ft_end=-726.3553702242612)
     last = stretch.stretch_verdict(p, line.Fn[-1], line.Ft[-1], line.theta_joint[-1])
     before = stretch.stretch_verdict(p, line.Fn[-2], line.Ft[-2], line.theta_joint[-2])
     assert last["stretch"] == "nonpositive" and before["stretch"] == "positive"
