@@ -602,3 +602,27 @@ def test_stretch_check_of_a_line_that_leaves_the_model():
     # A segment end compressed past EA decides without a shot (the base at Fn = 1e5: 1 - 4.4).
     v = stretch.stretch_verdict(p, 1e5, -726.0, 0.0)
     assert v["stretch"] == "nonpositive" and v["by"] == "segment_end" and v["lowest_end_stretch"] < -4
+
+
+def test_give_ups_alone_solves_a_state_alone_and_holds_a_farther_ft_to_ft_max(tmp_path):
+    # Campaign design 954: its Ft = 264.05 is given up on in a call with its farther Ft (3930.81)
+    # and solved alone (validation/README.md, "Give-ups that a call with their Ft alone solves");
+    # twice its farthest Ft lies beyond (Ft)max, which --farther must not pass to the solver.
+    from validation import campaign, give_ups_alone, recheck
+    z = np.load(recheck.STATES)
+    P, FT = z["P"][954:955], z["FT"][954:955]
+    j_near = int(np.argmin(np.abs(FT[0] - 264.05)))
+    j_far = int(np.argmax(FT[0]))
+    assert abs(FT[0, j_near] - 264.05) < 0.01 and 2 * FT[0, j_far] > campaign.seta(P[0]).ft_max
+    status = np.zeros_like(z["status"][954:955])
+    status[0, [j_near, j_far]] = 6
+    path = tmp_path / "rerun.npz"
+    np.savez(path, P=P, FT=FT, status=status)
+    alone = give_ups_alone.run(str(path))
+    rows = {round(r["Ft"], 2): r for r in alone["states"]}
+    assert alone["status_6"] == 2 and rows[264.05]["alone_status"] == 0
+    assert rows[264.05]["farthest_on_its_line"] == FT[0, j_far]
+    farther = give_ups_alone.run(str(path), farther=2.0)  # clipped to (Ft)max: no ValueError
+    assert farther["farther"] == 2.0 and farther["status_6"] == 2
+    with pytest.raises(SystemExit):
+        give_ups_alone.main([str(path), "--farther", "1"])
