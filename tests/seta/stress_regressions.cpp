@@ -196,3 +196,28 @@ TEST_CASE("a target given up on a line scaled for a farther one is retried on a 
   CHECK(st.turning_points_beam == shot.sign_changes_beam);
   CHECK(st.turning_points_spatula == shot.sign_changes_spatula);
 }
+
+// Campaign design 3796 at its six Ft: the farthest, Ft = 5739.42, is given up on in the call with
+// the others (status 6) and solved alone (status 7, the seta below the substrate). Its line has
+// the same scale either way, but the separatrix march past the stall stops at each target it
+// passes, so the march differs; critical_line_at retries such a farthest target on a line of its
+// own as well (validation/README.md, "The give-ups left, on an Intel Xeon"): the state is the one
+// asked alone.
+TEST_CASE("the farthest target of a call, given up on beside the others, is retried on a line of its own",
+          "[seta][line][stress]") {
+  const crawl_case c{0.45707785953356245, 398.525712331153, 3363815.8531661, 16503461.27749821,
+                     0.5616370040759329, 0.9069198765629499, 0.42190480462658025,
+                     {-5386.673677816091, 0.0, 2899.298056389613, 4595.546086936201, 5170.648631414351,
+                      5739.4199808699295}};
+  const auto s = design(c);
+  const auto all = gecko::critical_line_at(s, c.Ft);
+  const auto alone = gecko::critical_line_at(s, std::vector<double>{c.Ft[5]})[0];
+  const auto& st = all[5];
+  INFO("Fn " << st.Fn << " status " << static_cast<int>(st.status) << ", alone " << alone.Fn);
+  REQUIRE(alone.status == gecko::critical_status::inadmissible);
+  REQUIRE(st.status == gecko::critical_status::inadmissible);
+  CHECK(std::fabs(st.Fn - alone.Fn) <= 1e-11 * std::fabs(alone.Fn));
+  CHECK(std::fabs(st.theta_joint - alone.theta_joint) <= 1e-9);
+  CHECK(st.turning_points_beam == alone.turning_points_beam);
+  CHECK(st.min_z < 0);
+}

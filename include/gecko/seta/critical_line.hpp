@@ -250,19 +250,23 @@ inline void critical_line_at_imp(const TwoLevelSeta<T>& s, const T* Ft, std::siz
   if (!neg.empty()) run(neg, lo);
   if constexpr (std::is_same<T, double>::value && wider_than_double<long double>())
     retry_in_long_double<Policy, E1, E2>(s, Ft, count, opt, out);
-  // A target still given up on (status 6) short of the farthest Ft asked for in its direction,
+  // A target still given up on (status 6) where the call asked for other Ft in its direction,
   // retried on a line followed to it alone. The farthest target sets the line's force scale, and
   // with it the step sizes and the stall test (follow_line): a line scaled for a far target can
   // stall at a nearer one that a line scaled for that one passes (validation/README.md, "Give-ups
-  // that a call with their Ft alone solves"). After the long-double retry, so that it sees the
-  // same give-ups as without this retry (its line goes to the farthest of them, and every state
-  // it solves stays as it was); that retry makes the same retry in long double, on its own line.
-  // Only a solved state (status 0 or 7) replaces the give-up: no state solved before is touched.
+  // that a call with their Ft alone solves"). The farthest target itself has the same line, but
+  // the separatrix march past its stall stops at every target it passes (extend_on_separatrix),
+  // and the long-double retry follows the call's give-ups together, so its march differs too
+  // (campaign designs 574 and 3796: validation/README.md, "The give-ups left, on an Intel Xeon").
+  // After the long-double retry, so that it sees the same give-ups as without this retry (its
+  // line goes to the farthest of them, and every state it solves stays as it was); that retry
+  // makes the same retry in long double, on its own line. Only a solved state (status 0 or 7)
+  // replaces the give-up: no state solved before is touched.
   if (started) {
+    const std::size_t pos_count = pos.size(), neg_count = neg.size();
     for (std::size_t i = 0; i < count; ++i) {
       if (out[i].status != critical_status::not_reached) continue;
-      const T far = Ft[i] >= 0 ? hi : lo;
-      if (!(std::max(fabs(Ft[i]), base_scale) < std::max(fabs(far), base_scale))) continue;
+      if ((Ft[i] >= 0 ? pos_count : neg_count) < 2) continue;  // its line is its own already
       const critical_state<T> given_up = out[i];
       run(std::vector<std::size_t>{i}, Ft[i]);
       if (out[i].status != critical_status::converged && out[i].status != critical_status::inadmissible)
